@@ -1,0 +1,67 @@
+// liggghts-tri: Debian's LIGGGHTS with the triangulated-particle styles registered.
+// It takes exactly liggghts's command line and runs the input the same way; the only
+// difference is register_styles() between constructing LAMMPS and reading the input.
+#include "style_registry.h"
+
+#include "input.h"
+#include "lammps.h"
+#include "signal_handling.h"
+
+#include <mpi.h>
+
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+namespace {
+
+bool asks_for_help(int argc, char **argv) {
+  for (int i = 1; i < argc; ++i)
+    if (std::strcmp(argv[i], "-h") == 0 || std::strcmp(argv[i], "-help") == 0)
+      return true;
+  return false;
+}
+
+// LIGGGHTS prints its help from inside the LAMMPS constructor and then exits through
+// Error::done(), so our styles are appended by an exit handler, on rank 0 only.
+int help_rank = -1;
+void print_tri_styles() {
+  if (help_rank != 0)
+    return;
+  std::printf("* Styles added by liggghts-tri (triangulated particles):\n");
+  for (const tri_driver::StyleName &s : tri_driver::registered_styles())
+    std::printf("  %-8s %s\n", s.kind, s.name);
+  std::printf("\n");
+  std::fflush(stdout);
+}
+
+void install_signal_handlers() {
+  // Same handlers as liggghts: SIGINT/SIGTERM ask for a clean stop, SIGUSR1 for a restart.
+  struct sigaction quit_action {}, restart_action {};
+  quit_action.sa_handler = LAMMPS_NS::SignalHandler::int_handler;
+  sigaction(SIGINT, &quit_action, nullptr);
+  sigaction(SIGTERM, &quit_action, nullptr);
+  restart_action.sa_handler = LAMMPS_NS::SignalHandler::usr1_handler;
+  sigaction(SIGUSR1, &restart_action, nullptr);
+}
+
+} // namespace
+
+int main(int argc, char **argv) {
+  install_signal_handlers();
+  MPI_Init(&argc, &argv);
+
+  if (asks_for_help(argc, argv)) {
+    MPI_Comm_rank(MPI_COMM_WORLD, &help_rank);
+    std::atexit(print_tri_styles);
+  }
+
+  auto *lammps = new LAMMPS_NS::LAMMPS(argc, argv, MPI_COMM_WORLD);
+  tri_driver::register_styles(*lammps);
+  lammps->input->file();
+  delete lammps;
+
+  MPI_Finalize();
+  return 0;
+}

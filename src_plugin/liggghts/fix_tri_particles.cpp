@@ -1,0 +1,354 @@
+#include "fix_tri_particles.h"
+
+#include "particle_options.h"
+
+#include "mesh_reader.h"
+#include "random_rock.h"
+#include "rigid_body.h"
+#include "seeded_random.h"
+#include "shape_error.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "group.h"
+#include "memory.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+namespace {
+
+// state_ columns
+constexpr int kShape = 0, kQuat = 1, kAngmom = 5;
+constexpr double kUnset = -1.0;
+
+tri::Shape build_shape(const tri_liggghts::ShapeSpec &spec) {
+  if (spec.from_file) {
+    tri::TriangleMesh mesh = tri::read_mesh_file(spec.path);
+    if (spec.scale != 1.0)
+      mesh = tri::scaled(std::move(mesh), spec.scale);
+    try {
+      return tri::make_shape(spec.name, std::move(mesh));
+    } catch (const tri::ShapeError &e) {
+      throw tri::ShapeError(spec.path + ": " + e.what());
+    }
+  }
+  tri::RockParameters rock;
+  rock.ntri = spec.ntri;
+  rock.size = spec.size;
+  rock.seed = spec.seed;
+  rock.aspect_middle = spec.aspect_middle;
+  rock.aspect_short = spec.aspect_short;
+  return tri::make_shape(spec.name, tri::random_rock(rock));
+}
+
+} // namespace
+
+FixTriParticles::FixTriParticles(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg) {
+  if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag || !atom->torque_flag)
+    error->all(FLERR, "Fix tri/particles requires atom_style sphere (per-atom radius, rmass, "
+                      "omega and torque)");
+  if (!atom->tag_enable)
+    error->all(FLERR, "Fix tri/particles requires atom IDs (atom_modify id yes)");
+  if (igroup != group->find("all"))
+    error->all(FLERR, "Fix tri/particles must be applied to group all: every atom is a "
+                      "triangulated particle");
+  if (modify->find_fix_style("tri/particles", 0))
+    error->all(FLERR, "Only one fix tri/particles may be defined");
+
+  const tri_liggghts::ParticleOptions opt = tri_liggghts::parse_particle_options(narg, arg, 3, error);
+  density_ = opt.density;
+  epsilon_ = opt.epsilon;
+  assign_by_type_ = opt.assign_by_type;
+  assign_seed_ = opt.assign_seed;
+  orient_random_ = opt.orient_random;
+  orient_seed_ = opt.orient_seed;
+
+  for (const tri_liggghts::ShapeSpec &spec : opt.shapes) {
+    try {
+      shapes_.push_back(build_shape(spec));
+    } catch (const std::exception &e) {
+      const std::string msg = "Fix tri/particles: shape " + spec.name + ": " + e.what();
+      error->all(FLERR, msg.c_str());
+    }
+  }
+  if (assign_by_type_ && num_shapes() < atom->ntypes) {
+    const std::string msg = "Fix tri/particles: 'assign type' needs one shape per atom type (" +
+                            std::to_string(atom->ntypes) + " types, " +
+                            std::to_string(num_shapes()) + " shapes)";
+    error->all(FLERR, msg.c_str());
+  }
+  // A particle wider than the box in a periodic direction would touch its own image.
+  for (const tri::Shape &s : shapes_) {
+    const double diameter = 2.0 * (s.bounding_radius + epsilon_);
+    const double box_min = std::min({domain->xprd, domain->yprd, domain->zprd});
+    if (domain->box_exist && diameter >= box_min) {
+      const std::string msg = "Fix tri/particles: shape " + s.name + " (bounding diameter " +
+                              std::to_string(diameter) + " m with epsilon) does not fit in the "
+                              "simulation box (smallest side " + std::to_string(box_min) + " m)";
+      error->all(FLERR, msg.c_str());
+    }
+  }
+
+  peratom_flag = 1;
+  size_peratom_cols = kValues;
+  peratom_freq = 1;
+  restart_global = 1;
+  restart_peratom = 1;
+  create_attribute = 1;
+  comm_forward = 4; // quaternion
+  comm_border = 5;  // shape + quaternion
+
+  grow_arrays(atom->nmax);
+  atom->add_callback(0);
+  atom->add_callback(1);
+  atom->add_callback(2);
+
+  for (int i = 0; i < atom->nlocal; ++i) {
+    initialise_atom(i);
+    apply_mass_and_radius(i);
+  }
+}
+
+FixTriParticles::~FixTriParticles() {
+  atom->delete_callback(id, 0);
+  atom->delete_callback(id, 1);
+  atom->delete_callback(id, 2);
+  memory->destroy(state_);
+}
+
+int FixTriParticles::setmask() { return PRE_FORCE; }
+
+void FixTriParticles::initialise_atom(int i) {
+  const auto tag = static_cast<std::uint64_t>(atom->tag[i]);
+  int s = 0;
+  if (assign_by_type_)
+    s = atom->type[i] - 1;
+  else if (num_shapes() > 1)
+    s = tri::seeded_index(assign_seed_, tag, num_shapes());
+  state_[i][kShape] = s;
+  const Eigen::Quaterniond q =
+      orient_random_ ? tri::random_orientation(orient_seed_, tag) : Eigen::Quaterniond::Identity();
+  set_orientation(i, q);
+  set_angular_momentum(i, Eigen::Vector3d::Zero());
+}
+
+int FixTriParticles::initialise_unset_atoms() {
+  int count = 0;
+  for (int i = 0; i < atom->nlocal; ++i)
+    if (state_[i][kShape] == kUnset) {
+      if (atom->tag[i] <= 0)
+        error->one(FLERR, "Fix tri/particles: an atom without an ID cannot be given a shape");
+      initialise_atom(i);
+      apply_mass_and_radius(i);
+      ++count;
+    }
+  return count;
+}
+
+void FixTriParticles::apply_mass_and_radius(int i) {
+  const tri::Shape &s = shapes_[shape_index(i)];
+  atom->radius[i] = s.bounding_radius + epsilon_;
+  atom->rmass[i] = density_ * s.volume;
+  if (atom->density_flag)
+    atom->density[i] = density_;
+}
+
+void FixTriParticles::init() {
+  initialise_unset_atoms();
+  for (int i = 0; i < atom->nlocal; ++i)
+    apply_mass_and_radius(i);
+}
+
+void FixTriParticles::setup_pre_force(int) { pre_force(0); }
+
+void FixTriParticles::pre_force(int) {
+  // Atoms inserted during a run (fix insert/pour) arrive unset; their tags exist by now.
+  initialise_unset_atoms();
+  comm->forward_comm_fix(this);
+  update_world_triangles(atom->nlocal + atom->nghost);
+}
+
+void FixTriParticles::update_world_triangles(int n) {
+  if (static_cast<int>(world_.size()) < n)
+    world_.resize(n);
+  double **x = atom->x;
+  for (int i = 0; i < n; ++i) {
+    const int s = shape_index(i);
+    if (s < 0)
+      continue;
+    const Eigen::Matrix3d rotation = orientation(i).toRotationMatrix();
+    tri::transform_soa(shapes_[s].soa, rotation, Eigen::Vector3d(x[i][0], x[i][1], x[i][2]),
+                       world_[i]);
+  }
+}
+
+Eigen::Quaterniond FixTriParticles::orientation(int i) const {
+  const double *q = state_[i] + kQuat;
+  return Eigen::Quaterniond(q[0], q[1], q[2], q[3]);
+}
+
+void FixTriParticles::set_orientation(int i, const Eigen::Quaterniond &q) {
+  double *d = state_[i] + kQuat;
+  d[0] = q.w();
+  d[1] = q.x();
+  d[2] = q.y();
+  d[3] = q.z();
+}
+
+Eigen::Vector3d FixTriParticles::angular_momentum(int i) const {
+  const double *L = state_[i] + kAngmom;
+  return {L[0], L[1], L[2]};
+}
+
+void FixTriParticles::set_angular_momentum(int i, const Eigen::Vector3d &L) {
+  double *d = state_[i] + kAngmom;
+  d[0] = L.x();
+  d[1] = L.y();
+  d[2] = L.z();
+}
+
+Eigen::Vector3d FixTriParticles::principal_inertia(int i) const {
+  const tri::Shape &s = shapes_[shape_index(i)];
+  return (atom->rmass[i] / s.volume) * s.inertia_per_density;
+}
+
+/* ---------------- per-atom storage: the LIGGGHTS callbacks ---------------- */
+
+void FixTriParticles::grow_arrays(int nmax) {
+  memory->grow(state_, nmax, kValues, "tri/particles:state");
+  array_atom = state_;
+}
+
+void FixTriParticles::copy_arrays(int i, int j, int) {
+  std::memcpy(state_[j], state_[i], kValues * sizeof(double));
+}
+
+void FixTriParticles::set_arrays(int i) {
+  // create_atoms calls this before it assigns tags; such atoms are marked and initialised
+  // from their tag in init() or pre_force(). With a tag, the result is the same function of
+  // (tag, seeds) as in the constructor, so a repeated call changes nothing.
+  if (atom->tag[i] > 0) {
+    initialise_atom(i);
+    apply_mass_and_radius(i);
+    return;
+  }
+  state_[i][kShape] = kUnset;
+  set_orientation(i, Eigen::Quaterniond::Identity());
+  set_angular_momentum(i, Eigen::Vector3d::Zero());
+}
+
+int FixTriParticles::pack_exchange(int i, double *buf) {
+  std::memcpy(buf, state_[i], kValues * sizeof(double));
+  return kValues;
+}
+
+int FixTriParticles::unpack_exchange(int nlocal, double *buf) {
+  std::memcpy(state_[nlocal], buf, kValues * sizeof(double));
+  return kValues;
+}
+
+int FixTriParticles::pack_border(int n, int *list, double *buf) {
+  int m = 0;
+  for (int k = 0; k < n; ++k) {
+    const double *s = state_[list[k]];
+    for (int v = 0; v < 5; ++v)
+      buf[m++] = s[v];
+  }
+  return m; // LIGGGHTS: pack_border returns the total, pack_comm the count per atom
+}
+
+int FixTriParticles::unpack_border(int n, int first, double *buf) {
+  int m = 0;
+  for (int i = first; i < first + n; ++i)
+    for (int v = 0; v < 5; ++v)
+      state_[i][v] = buf[m++];
+  return m;
+}
+
+int FixTriParticles::pack_comm(int n, int *list, double *buf, int, int *) {
+  int m = 0;
+  for (int k = 0; k < n; ++k) {
+    const double *q = state_[list[k]] + kQuat;
+    for (int v = 0; v < 4; ++v)
+      buf[m++] = q[v];
+  }
+  return 4; // LIGGGHTS 3.8: values per atom, the caller multiplies
+}
+
+void FixTriParticles::unpack_comm(int n, int first, double *buf) {
+  int m = 0;
+  for (int i = first; i < first + n; ++i)
+    for (int v = 0; v < 4; ++v)
+      state_[i][kQuat + v] = buf[m++];
+}
+
+int FixTriParticles::pack_restart(int i, double *buf) {
+  buf[0] = kValues + 1;
+  std::memcpy(buf + 1, state_[i], kValues * sizeof(double));
+  return kValues + 1;
+}
+
+void FixTriParticles::unpack_restart(int nlocal, int nth) {
+  double **extra = atom->extra;
+  int m = 0;
+  for (int k = 0; k < nth; ++k)
+    m += static_cast<int>(extra[nlocal][m]);
+  std::memcpy(state_[nlocal], &extra[nlocal][m + 1], kValues * sizeof(double));
+}
+
+int FixTriParticles::size_restart(int) { return kValues + 1; }
+int FixTriParticles::maxsize_restart() { return kValues + 1; }
+
+// The shapes themselves are rebuilt from the deck; the restart file keeps a fingerprint so a
+// deck whose shapes differ from the run that wrote the restart is refused.
+double FixTriParticles::shape_fingerprint() const {
+  double f = num_shapes();
+  for (int s = 0; s < num_shapes(); ++s)
+    f += (s + 1) * (shapes_[s].volume * 1e9 + shapes_[s].soa.num_triangles());
+  return f;
+}
+
+void FixTriParticles::write_restart(FILE *fp) {
+  if (comm->me != 0)
+    return;
+  const double data[3] = {shape_fingerprint(), density_, epsilon_};
+  const int size = sizeof(data);
+  fwrite(&size, sizeof(int), 1, fp);
+  fwrite(data, sizeof(double), 3, fp);
+}
+
+void FixTriParticles::restart(char *buf) {
+  const double *data = reinterpret_cast<const double *>(buf);
+  const double f = shape_fingerprint();
+  if (std::fabs(data[0] - f) > 1e-9 * std::fabs(f))
+    error->all(FLERR, "Fix tri/particles: the shapes in this deck differ from those of the run "
+                      "that wrote the restart file");
+}
+
+double FixTriParticles::max_rad(int type) {
+  double r = 0.0;
+  if (assign_by_type_) {
+    if (type >= 1 && type <= num_shapes())
+      r = shapes_[type - 1].bounding_radius;
+  } else {
+    for (const tri::Shape &s : shapes_)
+      r = std::max(r, s.bounding_radius);
+  }
+  return r + epsilon_;
+}
+
+double FixTriParticles::memory_usage() {
+  double bytes = static_cast<double>(atom->nmax) * kValues * sizeof(double);
+  for (const tri::TriangleSoA &w : world_)
+    bytes += 3.0 * w.x.capacity() * sizeof(double) + sizeof(w);
+  return bytes;
+}

@@ -1,0 +1,84 @@
+// fix tri/particles: makes every atom of an `atom_style sphere` system a rigid triangulated
+// particle. It owns the shape templates and, per atom, the shape index, the orientation
+// quaternion and the angular momentum, as one LIGGGHTS per-atom array that is grown, copied,
+// migrated, sent to ghosts and written to restarts like any LIGGGHTS property. It sets
+// radius := bounding radius + epsilon (so LIGGGHTS's neighbour lists find every pair whose
+// soft layers can touch) and rmass := density * volume. Each step (pre_force) it rebuilds
+// the world-frame triangles of owned and ghost atoms for the contact styles and the output.
+//
+// The per-atom array is visible to dumps as f_ID[1..8]: shape index, quaternion w x y z
+// (body principal frame -> space), angular momentum Lx Ly Lz (space frame, kg m^2/s).
+#pragma once
+
+#include "fix.h"
+
+#include "shape.h"
+#include "triangle_soa.h"
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class FixTriParticles : public Fix {
+public:
+  static constexpr int kValues = 8; // shape, q(4), L(3)
+
+  FixTriParticles(class LAMMPS *, int, char **);
+  ~FixTriParticles() override;
+  int setmask() override;
+  void init() override;
+  void setup_pre_force(int) override;
+  void pre_force(int) override;
+
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  void set_arrays(int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+  int pack_border(int, int *, double *) override;
+  int unpack_border(int, int, double *) override;
+  int pack_comm(int, int *, double *, int, int *) override;
+  void unpack_comm(int, int, double *) override;
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int size_restart(int) override;
+  int maxsize_restart() override;
+  void write_restart(FILE *) override;
+  void restart(char *) override;
+
+  double max_rad(int type) override;
+  double memory_usage() override;
+
+  // For the other tri/ styles.
+  int num_shapes() const { return static_cast<int>(shapes_.size()); }
+  const tri::Shape &shape(int s) const { return shapes_[s]; }
+  int shape_index(int i) const { return static_cast<int>(state_[i][0]); }
+  Eigen::Quaterniond orientation(int i) const;
+  void set_orientation(int i, const Eigen::Quaterniond &q);
+  Eigen::Vector3d angular_momentum(int i) const;
+  void set_angular_momentum(int i, const Eigen::Vector3d &L);
+  // Principal moments of atom i, kg m^2, scaled with its rmass (so `set mass` stays consistent).
+  Eigen::Vector3d principal_inertia(int i) const;
+  double epsilon() const { return epsilon_; }
+  // World-frame triangles of owned and ghost atom i, as of the last pre_force.
+  const tri::TriangleSoA &world_triangles(int i) const { return world_[i]; }
+  // Recomputes world-frame triangles of atoms [0, n) from x and the quaternions.
+  void update_world_triangles(int n);
+
+private:
+  std::vector<tri::Shape> shapes_;
+  std::vector<tri::TriangleSoA> world_;
+  double density_ = 0.0, epsilon_ = 0.0;
+  bool assign_by_type_ = false, orient_random_ = false;
+  std::uint64_t assign_seed_ = 0, orient_seed_ = 0;
+  double **state_ = nullptr;
+
+  void initialise_atom(int i);
+  int initialise_unset_atoms();
+  void apply_mass_and_radius(int i);
+  double shape_fingerprint() const;
+};
+
+} // namespace LAMMPS_NS

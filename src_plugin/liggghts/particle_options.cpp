@@ -1,0 +1,176 @@
+#include "particle_options.h"
+
+#include "error.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <set>
+
+namespace tri_liggghts {
+namespace {
+
+class ArgReader {
+public:
+  ArgReader(int narg, char **arg, int first, LAMMPS_NS::Error *error)
+      : narg_(narg), arg_(arg), i_(first), error_(error) {}
+
+  bool done() const { return i_ >= narg_; }
+  std::string peek() const { return done() ? std::string() : std::string(arg_[i_]); }
+  std::string word(const std::string &what) {
+    if (done())
+      fail("missing " + what + " at the end of the command");
+    return arg_[i_++];
+  }
+  double real(const std::string &keyword) {
+    const std::string s = word("value after '" + keyword + "'");
+    char *end = nullptr;
+    errno = 0;
+    const double v = std::strtod(s.c_str(), &end);
+    if (end == s.c_str() || *end != '\0' || errno == ERANGE || !std::isfinite(v))
+      fail("'" + keyword + "' expects a number, got '" + s + "'");
+    return v;
+  }
+  long long integer(const std::string &keyword) {
+    const std::string s = word("value after '" + keyword + "'");
+    char *end = nullptr;
+    errno = 0;
+    const long long v = std::strtoll(s.c_str(), &end, 10);
+    if (end == s.c_str() || *end != '\0' || errno == ERANGE)
+      fail("'" + keyword + "' expects an integer, got '" + s + "'");
+    return v;
+  }
+  [[noreturn]] void fail(const std::string &message) {
+    const std::string text = "Fix tri/particles: " + message;
+    error_->all(FLERR, text.c_str());
+    std::abort(); // error->all does not return
+  }
+
+private:
+  int narg_;
+  char **arg_;
+  int i_;
+  LAMMPS_NS::Error *error_;
+};
+
+ShapeSpec parse_shape(ArgReader &in) {
+  ShapeSpec s;
+  s.name = in.word("shape name after 'shape'");
+  const std::string kind = in.word("'random' or 'file' after 'shape " + s.name + "'");
+  if (kind == "file") {
+    s.from_file = true;
+    s.path = in.word("file name after 'shape " + s.name + " file'");
+    if (in.peek() == "scale") {
+      in.word("scale");
+      s.scale = in.real("scale");
+      if (!(s.scale > 0.0))
+        in.fail("'scale' of shape " + s.name + " must be > 0");
+    }
+    return s;
+  }
+  if (kind != "random")
+    in.fail("shape " + s.name + ": expected 'random' or 'file', got '" + kind + "'");
+  bool have_ntri = false, have_size = false, have_seed = false;
+  for (;;) {
+    const std::string key = in.peek();
+    if (key == "ntri") {
+      in.word(key);
+      const long long n = in.integer("ntri");
+      if (n < 4 || n % 2 != 0 || n > 100000)
+        in.fail("shape " + s.name + ": 'ntri' must be an even number from 4 to 100000, got " +
+                std::to_string(n));
+      s.ntri = static_cast<int>(n);
+      have_ntri = true;
+    } else if (key == "size") {
+      in.word(key);
+      s.size = in.real("size");
+      if (!(s.size > 0.0))
+        in.fail("shape " + s.name + ": 'size' must be > 0");
+      have_size = true;
+    } else if (key == "seed") {
+      in.word(key);
+      const long long seed = in.integer("seed");
+      if (seed < 0)
+        in.fail("shape " + s.name + ": 'seed' must be >= 0");
+      s.seed = static_cast<std::uint64_t>(seed);
+      have_seed = true;
+    } else if (key == "aspect") {
+      in.word(key);
+      s.aspect_middle = in.real("aspect");
+      s.aspect_short = in.real("aspect");
+      if (!(s.aspect_middle > 0.0 && s.aspect_middle <= 1.0 && s.aspect_short > 0.0 &&
+            s.aspect_short <= s.aspect_middle))
+        in.fail("shape " + s.name + ": 'aspect B C' needs 0 < C <= B <= 1");
+    } else {
+      break;
+    }
+  }
+  if (!have_ntri || !have_size || !have_seed)
+    in.fail("shape " + s.name + " random needs 'ntri', 'size' and 'seed'");
+  return s;
+}
+
+} // namespace
+
+ParticleOptions parse_particle_options(int narg, char **arg, int first, LAMMPS_NS::Error *error) {
+  ArgReader in(narg, arg, first, error);
+  ParticleOptions o;
+  bool have_density = false, have_epsilon = false;
+  std::set<std::string> names;
+  while (!in.done()) {
+    const std::string key = in.word("keyword");
+    if (key == "shape") {
+      ShapeSpec s = parse_shape(in);
+      if (!names.insert(s.name).second)
+        in.fail("shape name '" + s.name + "' is used twice");
+      o.shapes.push_back(s);
+    } else if (key == "assign") {
+      const std::string mode = in.word("'random SEED' or 'type' after 'assign'");
+      if (mode == "type") {
+        o.assign_by_type = true;
+      } else if (mode == "random") {
+        const long long seed = in.integer("assign random");
+        if (seed < 0)
+          in.fail("'assign random' seed must be >= 0");
+        o.assign_by_type = false;
+        o.assign_seed = static_cast<std::uint64_t>(seed);
+      } else {
+        in.fail("'assign' expects 'random SEED' or 'type', got '" + mode + "'");
+      }
+    } else if (key == "density") {
+      o.density = in.real("density");
+      if (!(o.density > 0.0))
+        in.fail("'density' must be > 0");
+      have_density = true;
+    } else if (key == "epsilon") {
+      o.epsilon = in.real("epsilon");
+      if (!(o.epsilon > 0.0))
+        in.fail("'epsilon' must be > 0");
+      have_epsilon = true;
+    } else if (key == "orient") {
+      const std::string mode = in.word("'random SEED' or 'none' after 'orient'");
+      if (mode == "none") {
+        o.orient_random = false;
+      } else if (mode == "random") {
+        const long long seed = in.integer("orient random");
+        if (seed < 0)
+          in.fail("'orient random' seed must be >= 0");
+        o.orient_random = true;
+        o.orient_seed = static_cast<std::uint64_t>(seed);
+      } else {
+        in.fail("'orient' expects 'random SEED' or 'none', got '" + mode + "'");
+      }
+    } else {
+      in.fail("unknown keyword '" + key + "'");
+    }
+  }
+  if (o.shapes.empty())
+    in.fail("at least one 'shape' is required");
+  if (!have_density)
+    in.fail("'density' is required");
+  if (!have_epsilon)
+    in.fail("'epsilon' is required");
+  return o;
+}
+
+} // namespace tri_liggghts

@@ -1,0 +1,46 @@
+// The keywords of `fix tri/particles`, parsed once, before any shape is built.
+//
+//   fix ID all tri/particles shape NAME random ntri N size D seed S [aspect B C] ...
+//                            shape NAME file PATH [scale F] ...
+//                            [assign random SEED | assign type]
+//                            density RHO epsilon EPS [orient random SEED | orient none]
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace LAMMPS_NS {
+class Error;
+}
+
+namespace tri_liggghts {
+
+struct ShapeSpec {
+  std::string name;
+  bool from_file = false;
+  // random rock
+  int ntri = 0;
+  double size = 0.0; // bounding diameter, m
+  std::uint64_t seed = 0;
+  double aspect_middle = 1.0, aspect_short = 1.0;
+  // mesh file
+  std::string path;
+  double scale = 1.0;
+};
+
+struct ParticleOptions {
+  std::vector<ShapeSpec> shapes;
+  bool assign_by_type = false;    // else random by tag
+  std::uint64_t assign_seed = 0;
+  double density = 0.0;           // kg/m^3
+  double epsilon = 0.0;           // soft-layer width, m
+  bool orient_random = false;
+  std::uint64_t orient_seed = 0;
+};
+
+// Parses arg[first..narg) of the fix command. Every problem ends in error->all naming the
+// keyword and value.
+ParticleOptions parse_particle_options(int narg, char **arg, int first, LAMMPS_NS::Error *error);
+
+} // namespace tri_liggghts
