@@ -1,0 +1,124 @@
+#include "shape.h"
+
+#include "mesh_validation.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <utility>
+#include <vector>
+
+namespace tri {
+
+namespace {
+
+// Drops vertices no triangle uses (OBJ files may carry them), so that the bounding radius
+// and convexity speak about the surface only. Keeps the order of the used ones.
+void remove_unreferenced_vertices(TriangleMesh &mesh) {
+  std::vector<int> new_index(mesh.vertices.size(), -1);
+  for (const auto &t : mesh.triangles)
+    for (int v : t)
+      new_index[v] = 0;
+  std::vector<Eigen::Vector3d> kept;
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
+    if (new_index[v] == 0) {
+      new_index[v] = static_cast<int>(kept.size());
+      kept.push_back(mesh.vertices[v]);
+    }
+  for (auto &t : mesh.triangles)
+    for (int &v : t)
+      v = new_index[v];
+  mesh.vertices = std::move(kept);
+}
+
+Eigen::Vector3d unit_normal(const TriangleMesh &mesh, int t) {
+  return (mesh.corner(t, 1) - mesh.corner(t, 0))
+      .cross(mesh.corner(t, 2) - mesh.corner(t, 0))
+      .normalized();
+}
+
+} // namespace
+
+bool is_convex(const TriangleMesh &mesh, double tolerance) {
+  auto behind_all_planes = [&](const std::vector<Eigen::Vector3d> &points, int t) {
+    const Eigen::Vector3d n = unit_normal(mesh, t);
+    const double offset = n.dot(mesh.corner(t, 0));
+    for (const Eigen::Vector3d &p : points)
+      if (n.dot(p) - offset > tolerance)
+        return false;
+    return true;
+  };
+  // Cheap local test first, O(triangles log triangles): across every edge, the neighbouring
+  // triangle's corners must be behind this face. Most non-convex meshes fail here, so the
+  // quadratic global test below runs in full only for (locally) convex meshes.
+  std::vector<std::pair<std::pair<int, int>, int>> directed; // (a, b) -> triangle
+  directed.reserve(3 * mesh.triangles.size());
+  for (int t = 0; t < mesh.num_triangles(); ++t)
+    for (int k = 0; k < 3; ++k)
+      directed.push_back({{mesh.triangles[t][k], mesh.triangles[t][(k + 1) % 3]}, t});
+  std::sort(directed.begin(), directed.end());
+  for (const auto &[edge, t] : directed) {
+    const auto twin = std::lower_bound(directed.begin(), directed.end(),
+                                       std::make_pair(std::make_pair(edge.second, edge.first), 0));
+    if (twin == directed.end() || twin->first != std::make_pair(edge.second, edge.first))
+      continue; // not closed; the global test still applies
+    const int u = twin->second;
+    if (!behind_all_planes({mesh.corner(u, 0), mesh.corner(u, 1), mesh.corner(u, 2)}, t))
+      return false;
+  }
+  // Global test: local convexity alone does not exclude a surface that wraps around twice.
+  for (int t = 0; t < mesh.num_triangles(); ++t)
+    if (!behind_all_planes(mesh.vertices, t))
+      return false;
+  return true;
+}
+
+Shape make_shape(std::string name, TriangleMesh mesh) {
+  try {
+    validate_mesh(mesh);
+  } catch (const ShapeError &e) {
+    throw ShapeError("shape '" + name + "': " + e.what());
+  }
+  remove_unreferenced_vertices(mesh);
+  const MassProperties mp = mass_properties(mesh);
+
+  Shape shape;
+  shape.name = std::move(name);
+  const Eigen::Matrix3d to_body = mp.principal_axes.transpose();
+  for (Eigen::Vector3d &p : mesh.vertices)
+    p = to_body * (p - mp.centre_of_mass);
+  shape.mesh = std::move(mesh);
+  shape.soa = to_soa(shape.mesh);
+  shape.volume = mp.volume;
+  shape.inertia_per_density = mp.principal_moments;
+
+  double r2 = 0.0;
+  for (const Eigen::Vector3d &p : shape.mesh.vertices)
+    r2 = std::max(r2, p.squaredNorm());
+  shape.bounding_radius = std::sqrt(r2);
+
+  double e2 = std::numeric_limits<double>::infinity();
+  for (int t = 0; t < shape.mesh.num_triangles(); ++t)
+    for (int k = 0; k < 3; ++k)
+      e2 =
+          std::min(e2, (shape.mesh.corner(t, (k + 1) % 3) - shape.mesh.corner(t, k)).squaredNorm());
+  shape.min_edge_length = std::sqrt(e2);
+
+  shape.convex = is_convex(shape.mesh, kConvexityTolerance * 2.0 * shape.bounding_radius);
+  return shape;
+}
+
+TriangleMesh scaled(TriangleMesh mesh, double factor) {
+  if (!(std::isfinite(factor) && factor > 0.0)) {
+    std::ostringstream os;
+    os << "scale factor must be positive and finite, got " << factor;
+    throw ShapeError(os.str());
+  }
+  for (Eigen::Vector3d &p : mesh.vertices)
+    p *= factor;
+  return mesh;
+}
+
+} // namespace tri

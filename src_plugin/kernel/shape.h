@@ -1,0 +1,48 @@
+// A particle shape template: a validated closed mesh in its body frame plus the numbers the
+// dynamics and the contact search need. Every particle of the shape shares one Shape.
+//
+// Body frame: origin at the centre of mass, axes along the principal axes of inertia in
+// ascending order of moment (MassProperties::principal_axes, including its convention for
+// repeated moments), right-handed. world = R q * body + x for a particle at x with
+// orientation q.
+#pragma once
+
+#include "mass_properties.h"
+#include "shape_error.h"
+#include "triangle_mesh.h"
+#include "triangle_soa.h"
+
+#include <Eigen/Core>
+#include <string>
+
+namespace tri {
+
+// Relative tolerance of the convexity test: a vertex counts as "behind" a face plane when its
+// signed distance is at most kConvexityTolerance x (2 x bounding_radius).
+constexpr double kConvexityTolerance = 1e-9;
+
+struct Shape {
+  std::string name;
+  TriangleMesh mesh;                   // body frame; unreferenced vertices removed
+  TriangleSoA soa;                     // the same triangles, same order, as SoA
+  double volume = 0.0;                 // m^3
+  Eigen::Vector3d inertia_per_density; // principal moments about the centre of mass, m^5
+                                       // (x density = kg m^2), ascending
+  double bounding_radius = 0.0;        // max vertex distance from the centre of mass, m
+  double min_edge_length = 0.0;        // shortest triangle edge, m
+  bool convex = false;                 // every vertex on or behind every face plane
+};
+
+// Validates the mesh (validate_mesh: throws ShapeError, message prefixed with
+// "shape '<name>': "), computes its mass properties and moves it into its principal frame.
+Shape make_shape(std::string name, TriangleMesh mesh);
+
+// Uniformly scales a mesh about the origin (for the `scale` keyword). Throws ShapeError if
+// factor <= 0 or is not finite.
+TriangleMesh scaled(TriangleMesh mesh, double factor);
+
+// True when every vertex is on or behind every face plane, within tolerance (same units as
+// the mesh). Precondition: a valid mesh.
+bool is_convex(const TriangleMesh &mesh, double tolerance);
+
+} // namespace tri
