@@ -57,8 +57,8 @@ void rotate_free(Eigen::Quaterniond &q, Eigen::Vector3d &angmom_space,
   const Eigen::Vector3d l_body = q.conjugate() * angmom_space;
   Vec4 qv = as_vec(q);
   // Conjugate momentum p = 2 S(q) (0, L_body).
-  Vec4 p = 2.0 * (l_body[0] * permute(0, qv) + l_body[1] * permute(1, qv) +
-                  l_body[2] * permute(2, qv));
+  Vec4 p =
+      2.0 * (l_body[0] * permute(0, qv) + l_body[1] * permute(1, qv) + l_body[2] * permute(2, qv));
   const Eigen::Vector3d &inertia = principal_inertia;
   free_rotate(2, 0.5 * dt, inertia[2], qv, p);
   free_rotate(1, 0.5 * dt, inertia[1], qv, p);

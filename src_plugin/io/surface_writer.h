@@ -1,0 +1,60 @@
+// Particle surfaces out to ParaView: one .vtp per rank and frame, a .pvtp per frame that
+// joins the ranks' pieces, and a .pvd collection that makes the frames one time series.
+//
+// What is written: every triangle of every particle, in the world frame (m), as a VTK
+// triangle with its own 3 points (corners are replicated, as in TriangleSoA; ParaView does
+// not mind and no index map is needed). Cell data, one tuple per triangle, all taken from
+// the owning particle: "id" (Int64, atom tag), "shape" (Int32, shape index), "type"
+// (Int32, atom type), "velocity" (m/s), "omega" (rad/s), "force" (N), the last three
+// 3-component Float64, space frame. Colour by "id" to see particles, by "velocity" etc.
+//
+// No MPI here: the caller (fix tri/vtk) has each rank write its own piece and rank 0 write
+// the .pvtp and .pvd. No LIGGGHTS either; VTK stays private to this library's sources.
+// Parent directories of every output path are created if missing. Failures throw
+// std::runtime_error with the path in the message (the fix turns it into error->one).
+#pragma once
+
+#include "triangle_soa.h"
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace tri {
+
+// One rank's particles, flattened triangle by triangle. All vectors grow together:
+// xyz 9 per triangle (corner 0 x,y,z, corner 1 x,y,z, corner 2 x,y,z), atom_id, shape_id and
+// type 1 per triangle, velocity, omega and force 3 per triangle.
+struct SurfaceCells {
+  std::vector<double> xyz;
+  std::vector<long long> atom_id;
+  std::vector<int> shape_id, type;
+  std::vector<double> velocity, omega, force;
+
+  // Appends all triangles of one particle, `world` already in the world frame; v, w and f
+  // (3 each) are copied onto every one of its triangles.
+  void append_particle(const TriangleSoA &world, long long id, int shape, int type,
+                       const double v[3], const double w[3], const double f[3]);
+  // Empties the arrays, keeping their capacity (one SurfaceCells can serve every frame).
+  void clear();
+  int num_triangles() const { return static_cast<int>(atom_id.size()); }
+};
+
+// Writes one VTK XML PolyData file (vtkXMLPolyDataWriter, binary appended data, zlib, 64-bit
+// headers). Throws std::runtime_error naming `path` if the arrays of `cells` disagree in
+// size or the file cannot be written. Zero triangles is valid (an empty piece).
+void write_vtp(const std::string &path, const SurfaceCells &cells);
+
+// Writes the .pvtp summary of one frame: the same point and cell arrays as write_vtp
+// declares for `schema_example` (only its array names and types are used, not its data),
+// and one <Piece Source=...> per entry of `piece_files`, named relative to the .pvtp's
+// directory (as ParaView resolves them). The pieces need not exist yet.
+void write_pvtp(const std::string &path, const std::vector<std::string> &piece_files,
+                const SurfaceCells &schema_example);
+
+// Writes (or rewrites, atomically: a temporary file renamed over `path`) a ParaView .pvd
+// collection with one DataSet per (time in s, file relative to the .pvd) entry, in the
+// given order. Times are printed with 17 significant digits so distinct times stay distinct.
+void write_pvd(const std::string &path, const std::vector<std::pair<double, std::string>> &frames);
+
+} // namespace tri
