@@ -12,6 +12,7 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <libqhull_r/qhull_ra.h>
@@ -128,6 +129,33 @@ bool has_sliver(const std::vector<Eigen::Vector3d> &points,
   return false;
 }
 
+// Smallest interior dihedral angle over all edges of an outward-oriented closed mesh. Small
+// means a wedge: e.g. four spread points near one great circle make a flat tetrahedron
+// whose faces have good angles but whose volume is almost zero.
+double smallest_dihedral(const std::vector<Eigen::Vector3d> &points,
+                         const std::vector<std::array<int, 3>> &triangles) {
+  std::vector<Eigen::Vector3d> normals;
+  std::vector<std::pair<std::pair<int, int>, int>> directed; // (a, b) -> triangle
+  for (int t = 0; t < static_cast<int>(triangles.size()); ++t) {
+    const auto &tr = triangles[t];
+    normals.push_back(
+        (points[tr[1]] - points[tr[0]]).cross(points[tr[2]] - points[tr[0]]).normalized());
+    for (int k = 0; k < 3; ++k)
+      directed.push_back({{tr[k], tr[(k + 1) % 3]}, t});
+  }
+  std::sort(directed.begin(), directed.end());
+  double smallest = kPi;
+  for (const auto &[edge, t] : directed) {
+    const auto twin = std::lower_bound(directed.begin(), directed.end(),
+                                       std::make_pair(std::make_pair(edge.second, edge.first), 0));
+    if (twin == directed.end() || twin->first != std::make_pair(edge.second, edge.first))
+      return 0.0; // not closed: reject
+    const double cos_normals = std::clamp(normals[t].dot(normals[twin->second]), -1.0, 1.0);
+    smallest = std::min(smallest, kPi - std::acos(cos_normals));
+  }
+  return smallest;
+}
+
 // Counter-clockwise seen from outside: the normal points away from an interior point.
 void orient_outward(const std::vector<Eigen::Vector3d> &points,
                     std::vector<std::array<int, 3>> &triangles) {
@@ -182,13 +210,15 @@ TriangleMesh random_rock(const RockParameters &params) {
     if (static_cast<int>(triangles.size()) != params.ntri ||
         has_sliver(directions, triangles, min_chord))
       continue;
+    orient_outward(directions, triangles); // the stretch below keeps the orientation
+    if (smallest_dihedral(directions, triangles) < kRockMinDihedralDegrees * kPi / 180.0)
+      continue;
+    canonical_order(triangles);
 
     TriangleMesh mesh;
     const Eigen::Vector3d stretch(1.0, params.aspect_middle, params.aspect_short);
     for (const Eigen::Vector3d &d : directions)
       mesh.vertices.push_back(d.cwiseProduct(stretch));
-    orient_outward(mesh.vertices, triangles);
-    canonical_order(triangles);
     mesh.triangles = std::move(triangles);
 
     const Eigen::Vector3d centre = mass_properties(mesh).centre_of_mass;

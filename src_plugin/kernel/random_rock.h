@@ -5,8 +5,10 @@
 // sphere by n points; their convex hull (Qhull, triangulated) has exactly 2n - 4 = ntri
 // triangles when every point is a hull vertex, which holds for points in general position on
 // a sphere. A draw is rejected, and the next one taken from the same random stream, when the
-// hull has another triangle count or a sliver: a triangle angle below kRockMinAngleDegrees or
-// an edge shorter than kRockMinSpacing x the tiling edge (both measured on the sphere).
+// hull has another triangle count or a sliver: a triangle angle below kRockMinAngleDegrees,
+// an edge shorter than kRockMinSpacing x the tiling edge, or an interior dihedral angle below
+// kRockMinDihedralDegrees (a wedge: e.g. a flat tetrahedron from four points near one great
+// circle), all measured on the sphere.
 // The hull is then stretched by (1, aspect_middle, aspect_short) along x, y, z (an affine map
 // keeps it convex with the same triangles; it can make angles smaller, by at most a factor of
 // about aspect_short), triangles are oriented outward (counter-clockwise seen from outside),
@@ -34,9 +36,10 @@ struct RockParameters {
   double aspect_short = 1.0;  // short / long axis ratio, in (0, 1]; <= aspect_middle not required
 };
 
-constexpr double kRockMinSpacing = 0.5;       // fraction of the hexagonal tiling edge
-constexpr double kRockMinAngleDegrees = 10.0; // smallest triangle angle on the sphere
-constexpr int kRockMaxAttempts = 10000;       // draws before giving up (never reached in tests)
+constexpr double kRockMinSpacing = 0.5;          // fraction of the hexagonal tiling edge
+constexpr double kRockMinAngleDegrees = 10.0;    // smallest triangle angle on the sphere
+constexpr double kRockMinDihedralDegrees = 30.0; // smallest interior dihedral angle on the sphere
+constexpr int kRockMaxAttempts = 10000;          // draws before giving up (never reached in tests)
 
 // Throws ShapeError for ntri odd or < 4, size not positive and finite, aspect outside (0, 1],
 // or (not expected) no acceptable hull within kRockMaxAttempts draws.

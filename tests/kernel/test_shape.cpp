@@ -1,0 +1,142 @@
+// make_shape: principal frame, derived numbers, convexity, error prefix; scaled().
+#include "mesh_validation.h"
+#include "shape.h"
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <gtest/gtest.h>
+#include <limits>
+#include <string>
+
+namespace {
+
+// Box [0,a] x [0,b] x [0,c]; vertex i has x = a (i&1), y = b (i&2), z = c (i&4).
+tri::TriangleMesh box(double a, double b, double c) {
+  tri::TriangleMesh m;
+  for (int i = 0; i < 8; ++i)
+    m.vertices.emplace_back(a * (i & 1), b * ((i >> 1) & 1), c * ((i >> 2) & 1));
+  m.triangles = {{0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}, {0, 1, 5}, {0, 5, 4},
+                 {2, 6, 7}, {2, 7, 3}, {0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}};
+  return m;
+}
+
+// An L-shaped prism (non-convex), extruded along z from the outline
+// (0,0) (2,0) (2,1) (1,1) (1,2) (0,2), height h. The caps are fans from corner (0,0), which
+// sees the whole L.
+tri::TriangleMesh l_prism(double h) {
+  const double outline[6][2] = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
+  tri::TriangleMesh m;
+  for (double z : {0.0, h})
+    for (const auto &p : outline)
+      m.vertices.emplace_back(p[0], p[1], z);
+  // Sides: outline counter-clockwise seen from +z, so (i, i+1, top i+1) faces outward.
+  for (int i = 0; i < 6; ++i) {
+    const int j = (i + 1) % 6;
+    m.triangles.push_back({i, j, j + 6});
+    m.triangles.push_back({i, j + 6, i + 6});
+  }
+  // Top (+z, counter-clockwise).
+  m.triangles.insert(m.triangles.end(), {{6, 7, 8}, {6, 8, 9}, {6, 9, 10}, {6, 10, 11}});
+  // Bottom (-z): the same, reversed.
+  m.triangles.insert(m.triangles.end(), {{0, 2, 1}, {0, 3, 2}, {0, 4, 3}, {0, 5, 4}});
+  return m;
+}
+
+TEST(Shape, BoxMovesToItsPrincipalFrame) {
+  const double a = 0.003, b = 0.001, c = 0.002;
+  const Eigen::Matrix3d r =
+      Eigen::AngleAxisd(0.9, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  tri::TriangleMesh m = box(a, b, c);
+  for (auto &v : m.vertices)
+    v = r * v + Eigen::Vector3d(1, 2, 3);
+  const tri::Shape s = tri::make_shape("brick", m);
+
+  EXPECT_EQ(s.name, "brick");
+  const double volume = a * b * c;
+  EXPECT_NEAR(s.volume, volume, 1e-12 * volume);
+  const Eigen::Vector3d moments(volume * (b * b + c * c) / 12, volume * (a * a + b * b) / 12,
+                                volume * (a * a + c * c) / 12);
+  EXPECT_NEAR((s.inertia_per_density - moments).norm() / moments.norm(), 0.0, 1e-10);
+  // In the body frame the mesh is centred with its inertia tensor diagonal, ascending, and the
+  // box is axis-aligned: long side along x, middle (c) along y, short (b) along z.
+  const tri::MassProperties body = tri::mass_properties(s.mesh);
+  EXPECT_NEAR(body.centre_of_mass.norm(), 0.0, 1e-15);
+  EXPECT_NEAR((body.inertia_per_density - Eigen::Matrix3d(moments.asDiagonal())).norm() /
+                  moments.norm(),
+              0.0, 1e-10);
+  for (const auto &v : s.mesh.vertices) {
+    EXPECT_NEAR(std::abs(v.x()), a / 2, 1e-15);
+    EXPECT_NEAR(std::abs(v.y()), c / 2, 1e-15);
+    EXPECT_NEAR(std::abs(v.z()), b / 2, 1e-15);
+  }
+  EXPECT_NEAR(s.bounding_radius, 0.5 * std::sqrt(a * a + b * b + c * c), 1e-15);
+  EXPECT_NEAR(s.min_edge_length, b, 1e-15);
+  EXPECT_TRUE(s.convex);
+  // SoA holds the same triangles in the same order.
+  ASSERT_EQ(s.soa.num_triangles(), s.mesh.num_triangles());
+  for (int t = 0; t < s.mesh.num_triangles(); ++t)
+    for (int k = 0; k < 3; ++k)
+      EXPECT_EQ(s.soa.vertex(t, k), s.mesh.corner(t, k));
+}
+
+TEST(Shape, LPrismIsNotConvex) {
+  const tri::Shape s = tri::make_shape("ell", l_prism(0.5));
+  EXPECT_FALSE(s.convex);
+  EXPECT_NEAR(s.volume, 3 * 0.5, 1e-12);
+  EXPECT_NEAR(s.min_edge_length, 0.5, 1e-12);
+}
+
+TEST(Shape, UnreferencedVerticesAreDropped) {
+  tri::TriangleMesh m = box(1, 1, 1);
+  m.vertices.emplace_back(100, 100, 100); // used by no triangle
+  const tri::Shape s = tri::make_shape("cube", m);
+  EXPECT_EQ(s.mesh.num_vertices(), 8);
+  EXPECT_NEAR(s.bounding_radius, std::sqrt(3.0) / 2, 1e-15);
+}
+
+TEST(Shape, ErrorsNameTheShape) {
+  tri::TriangleMesh m = box(1, 1, 1);
+  m.triangles.pop_back();
+  try {
+    tri::make_shape("gear", m);
+    FAIL() << "an open mesh was accepted";
+  } catch (const tri::ShapeError &e) {
+    EXPECT_EQ(std::string(e.what()).rfind("shape 'gear': mesh is not closed", 0), 0u) << e.what();
+  }
+}
+
+TEST(Shape, ScaledScalesVolumeAndInertia) {
+  const tri::Shape one = tri::make_shape("a", box(3, 1, 2));
+  const tri::Shape two = tri::make_shape("b", tri::scaled(box(3, 1, 2), 2.0));
+  EXPECT_NEAR(two.volume, 8 * one.volume, 1e-12);
+  EXPECT_NEAR((two.inertia_per_density - 32 * one.inertia_per_density).norm(), 0.0, 1e-11);
+  EXPECT_NEAR(two.bounding_radius, 2 * one.bounding_radius, 1e-14);
+}
+
+TEST(Shape, ScaledRejectsBadFactors) {
+  for (double f : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN(),
+                   std::numeric_limits<double>::infinity()}) {
+    try {
+      tri::scaled(box(1, 1, 1), f);
+      FAIL() << "factor " << f << " was accepted";
+    } catch (const tri::ShapeError &e) {
+      EXPECT_EQ(std::string(e.what()).rfind("scale factor must be positive and finite, got ", 0),
+                0u)
+          << e.what();
+    }
+  }
+}
+
+TEST(Shape, ConvexityToleranceIsRelative) {
+  // A box with one face bulging inward by much less than the tolerance is still convex; by
+  // more, it is not. Move vertex 7 (a corner) inward along the face normal of +x.
+  for (double scale : {1e-6, 1.0, 1e3}) {
+    tri::TriangleMesh m = tri::scaled(box(1, 1, 1), scale);
+    m.vertices[7].x() -= 1e-12 * scale;
+    EXPECT_TRUE(tri::make_shape("c", m).convex) << scale;
+    m.vertices[7].x() -= 1e-3 * scale;
+    EXPECT_FALSE(tri::make_shape("c", m).convex) << scale;
+  }
+}
+
+} // namespace
