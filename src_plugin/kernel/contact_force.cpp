@@ -1,0 +1,59 @@
+// Force and torques of one pair from its contact points; see contact_force.h.
+#include "contact_force.h"
+
+#include <algorithm>
+
+namespace tri {
+
+using Eigen::Vector3d;
+
+PairForceResult pair_contact_force(const std::vector<ContactPoint> &contacts, const BodyState &a,
+                                   const BodyState &b, const ContactCoefficients &coeff,
+                                   double dt, double *history) {
+  PairForceResult r;
+  const int n = static_cast<int>(contacts.size());
+  const bool with_history = coeff.tangential == TangentialModel::history && history != nullptr;
+  int slot_of[kHistorySlots];
+  double next[kHistoryDoubles] = {};
+  if (with_history)
+    match_history(history, contacts.data(), n, a.x, slot_of);
+
+  const double m_eff = effective_mass(a.mass, b.mass);
+  for (int i = 0; i < n; ++i) {
+    const ContactPoint &c = contacts[i];
+    const ContactKinematics k = contact_kinematics(c.point, c.normal, a, b);
+    const double f_n = normal_force(coeff, c.overlap, k.v_n, m_eff);
+    Vector3d f_t = Vector3d::Zero();
+    switch (coeff.tangential) {
+    case TangentialModel::history: {
+      const bool tracked = with_history && i < kHistorySlots;
+      Vector3d shear = Vector3d::Zero();
+      if (tracked && slot_of[i] >= 0)
+        shear = slot_shear(history, slot_of[i]);
+      f_t = tangential_force_history(coeff, c.normal, k.v_t, f_n, m_eff, dt, shear);
+      if (tracked)
+        write_slot(next, i, c.normal, shear, c.point - a.x);
+      else
+        ++r.untracked;
+      break;
+    }
+    case TangentialModel::no_history:
+      f_t = tangential_force_no_history(coeff, k.v_t, f_n, m_eff);
+      break;
+    }
+    const Vector3d f_b = f_n * c.normal + f_t;
+    r.force_a -= f_b;
+    r.torque_a -= (c.point - a.x).cross(f_b);
+    r.torque_b += (c.point - b.x).cross(f_b);
+    r.contacts_before += c.num_merged;
+    r.max_overlap = std::max(r.max_overlap, c.overlap);
+    r.min_distance = std::min(r.min_distance, c.min_distance);
+    r.intersecting = r.intersecting || c.intersecting;
+  }
+  r.contacts_after = n;
+  if (with_history)
+    std::copy(next, next + kHistoryDoubles, history);
+  return r;
+}
+
+} // namespace tri

@@ -1,0 +1,44 @@
+// Force and torques of one particle pair (or particle-wall pair) from its reduced contact
+// points: what pair tri/gran and fix tri/wall call per pair per step. Each contact point gets
+// the sub-models of contact_model.h (sign conventions there); the tangential history lives in
+// the host's per-pair array (layout and matching in contact_history.h).
+//
+// Per contact point p with normal n and overlap delta:
+//   kinematics at p (rotation included), F_n = normal_force(...), F_t = tangential sub-model,
+//   F_b = F_n n + F_t (on b), F_a = -F_b; torque_a += (p - x_a) x F_a, torque_b += (p - x_b) x
+//   F_b, friction included. Hence F_a + F_b = 0 and total angular momentum is conserved about
+//   any point: (x_a - o) x F_a + torque_a + (x_b - o) x F_b + torque_b = 0 (to rounding).
+// Statistics are returned, never kept.
+#pragma once
+
+#include "contact_history.h"
+#include "contact_model.h"
+#include "contact_reduction.h"
+
+#include <Eigen/Core>
+
+#include <limits>
+#include <vector>
+
+namespace tri {
+
+struct PairForceResult {
+  Eigen::Vector3d force_a = Eigen::Vector3d::Zero();  // N on a; the force on b is -force_a
+  Eigen::Vector3d torque_a = Eigen::Vector3d::Zero(); // N m on a about x_a
+  Eigen::Vector3d torque_b = Eigen::Vector3d::Zero(); // N m on b about x_b (walls: ignore)
+  int contacts_before = 0; // triangle-pair contacts reduced into the points (sum num_merged)
+  int contacts_after = 0;  // contact points
+  int untracked = 0;       // points beyond kHistorySlots: no shear carried this step
+  double max_overlap = 0.0; // m, deepest penetration of the soft layers
+  double min_distance = std::numeric_limits<double>::infinity(); // m, closest triangle pair
+  bool intersecting = false; // some triangles intersect (the soft layer was overrun)
+};
+
+// `history`: kHistoryDoubles values of this pair, read and rewritten (tangential `history`
+// model); ignored and may be null for `no_history`. dt > 0 in s. With no contacts the history
+// is cleared and the result is zero.
+PairForceResult pair_contact_force(const std::vector<ContactPoint> &contacts, const BodyState &a,
+                                   const BodyState &b, const ContactCoefficients &coeff,
+                                   double dt, double *history);
+
+} // namespace tri

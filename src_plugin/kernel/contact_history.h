@@ -1,0 +1,57 @@
+// Tangential history of one particle pair: a fixed block of doubles that the host stores per
+// pair (LIGGGHTS contact history, `dnum` = kHistoryDoubles), migrated between ranks and
+// written to restarts as it is. Plain doubles, no pointers, no flags outside the array.
+//
+// Layout: kHistorySlots slots of kHistorySlotDoubles each, slot s at offset
+// s * kHistorySlotDoubles:
+//   [0..2] patch normal n (unit, from a towards b, world frame); all zero = empty slot
+//   [3..5] shear displacement (m, world frame, in the tangent plane of n)
+//   [6..8] lever p - x_a (m, world frame): where the patch was, relative to a's centre
+// A zero-filled array (what LIGGGHTS gives a new pair) is "no patches".
+//
+// Matching rule, applied each step to the pair's reduced contacts (deepest first, only the
+// first kHistorySlots of them are tracked; further ones start from zero shear every step):
+// a contact i and an occupied slot s are compatible when n_i . n_s >= cos(kHistoryMatchAngle)
+// (normals turn far less than that in one step, while reduction classes of one region differ
+// by more); among compatible pairs, the ones whose levers are closest are matched first
+// (greedy on |lever_i - lever_s|, ties by contact then slot index), each contact and slot at
+// most once. The lever separates patches with the same normal (a non-convex particle on a
+// flat wall in two places). A matched contact continues its slot's shear; an unmatched one
+// starts from zero; slots not matched are dropped (the patch ended). The new history is
+// written compactly: slot k = tracked contact k, the rest zero. Deterministic.
+#pragma once
+
+#include "contact_reduction.h"
+
+#include <Eigen/Core>
+
+namespace tri {
+
+constexpr int kHistorySlots = 4;
+constexpr int kHistorySlotDoubles = 9;
+constexpr int kHistoryDoubles = kHistorySlots * kHistorySlotDoubles; // 36
+constexpr double kHistoryMatchAngle = 0.7853981633974483;            // rad, 45 degrees
+
+// For each of the first min(n, kHistorySlots) contacts: the matched old slot, or -1 (new).
+// `history` holds kHistoryDoubles values; x_a is a's centre of mass (m).
+void match_history(const double *history, const ContactPoint *contacts, int n,
+                   const Eigen::Vector3d &x_a, int slot_of_contact[kHistorySlots]);
+
+// Slot accessors (s in [0, kHistorySlots)).
+inline bool slot_occupied(const double *history, int s) {
+  const double *h = history + s * kHistorySlotDoubles;
+  return h[0] != 0.0 || h[1] != 0.0 || h[2] != 0.0;
+}
+inline Eigen::Vector3d slot_normal(const double *history, int s) {
+  return Eigen::Vector3d(history + s * kHistorySlotDoubles);
+}
+inline Eigen::Vector3d slot_shear(const double *history, int s) {
+  return Eigen::Vector3d(history + s * kHistorySlotDoubles + 3);
+}
+inline Eigen::Vector3d slot_lever(const double *history, int s) {
+  return Eigen::Vector3d(history + s * kHistorySlotDoubles + 6);
+}
+void write_slot(double *history, int s, const Eigen::Vector3d &normal,
+                const Eigen::Vector3d &shear, const Eigen::Vector3d &lever);
+
+} // namespace tri

@@ -1,0 +1,80 @@
+// Contact sub-models (LIGGGHTS hooke/stiffness semantics); conventions in the header.
+#include "contact_model.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tri {
+
+using Eigen::Vector3d;
+
+std::string coefficient_error(const ContactCoefficients &c) {
+  const struct {
+    const char *name;
+    double value;
+  } values[] = {{"kn", c.kn},         {"kt", c.kt},          {"gamman", c.gamman},
+                {"gammat", c.gammat}, {"coefficientFriction", c.mu}};
+  for (const auto &v : values) {
+    if (!std::isfinite(v.value))
+      return std::string(v.name) + " is not finite";
+    if (v.value < 0.0)
+      return std::string(v.name) + " must be >= 0";
+  }
+  return std::string();
+}
+
+double effective_mass(double mass_a, double mass_b) {
+  const bool wall_a = !(mass_a > 0.0) || !std::isfinite(mass_a);
+  const bool wall_b = !(mass_b > 0.0) || !std::isfinite(mass_b);
+  if (wall_b)
+    return wall_a ? 0.0 : mass_a;
+  if (wall_a)
+    return mass_b;
+  return mass_a * mass_b / (mass_a + mass_b);
+}
+
+double normal_force(const ContactCoefficients &c, double overlap, double v_n, double m_eff) {
+  const double gamma = c.absolute_damping ? c.gamman : c.gamman * m_eff;
+  const double f = c.kn * overlap - gamma * v_n;
+  return c.limit_force ? std::max(f, 0.0) : f;
+}
+
+Vector3d tangential_force_history(const ContactCoefficients &c, const Vector3d &n,
+                                  const Vector3d &v_t, double f_n, double m_eff, double dt,
+                                  Vector3d &shear) {
+  shear += v_t * dt;
+  shear -= shear.dot(n) * n;
+  Vector3d f_t = -c.kt * shear;
+  const double f_shear = f_t.norm();
+  const double f_friction = c.mu * std::abs(f_n);
+  if (f_shear > f_friction) {
+    // Sliding: the spring is held at the Coulomb limit (f_shear > 0 implies kt > 0).
+    f_t *= f_friction / f_shear;
+    shear = -f_t / c.kt;
+  } else if (c.tangential_damping) {
+    const double gamma = c.absolute_damping ? c.gammat : c.gammat * m_eff;
+    f_t -= gamma * v_t;
+  }
+  return f_t;
+}
+
+Vector3d tangential_force_no_history(const ContactCoefficients &c, const Vector3d &v_t,
+                                     double f_n, double m_eff) {
+  const double speed = v_t.norm();
+  if (!(speed > 0.0))
+    return Vector3d::Zero();
+  const double gamma = c.absolute_damping ? c.gammat : c.gammat * m_eff;
+  const double magnitude = std::min(gamma * speed, c.mu * std::abs(f_n));
+  return -magnitude / speed * v_t;
+}
+
+ContactKinematics contact_kinematics(const Vector3d &p, const Vector3d &n, const BodyState &a,
+                                     const BodyState &b) {
+  ContactKinematics k;
+  k.v_rel = (b.v + b.omega.cross(p - b.x)) - (a.v + a.omega.cross(p - a.x));
+  k.v_n = k.v_rel.dot(n);
+  k.v_t = k.v_rel - k.v_n * n;
+  return k;
+}
+
+} // namespace tri

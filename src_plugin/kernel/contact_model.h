@@ -1,0 +1,91 @@
+// The contact law of one contact point, split as in LAMMPS GRANULAR into small stateless
+// sub-models (normal, tangential, kinematics) that share one coefficient struct. They follow
+// LIGGGHTS 3.8 `pair gran model hooke/stiffness tangential history|no_history` exactly, so a
+// deck written for spheres keeps its meaning. No host calls: dt and all coefficients are
+// arguments. SI units throughout (m, s, kg, N).
+//
+// Sign conventions (every function here and in contact_force.h):
+// - n: unit contact normal from body a towards body b.
+// - v_rel = (v_b + w_b x (p - x_b)) - (v_a + w_a x (p - x_a)): velocity of b's material point
+//   at the contact point p relative to a's.
+// - v_n = v_rel . n: NEGATIVE while the bodies approach, positive while they separate
+//   (the same sign as LIGGGHTS's vn). v_t = v_rel - v_n n.
+// - F_n (scalar) > 0 is repulsive. The contact force ON B is F_n n + F_t; the force on a is
+//   its negative. F_t is computed from b's relative motion, so it opposes v_t.
+//
+// Adding a sub-model: one function here, one enum value, one case in contact_force.cpp.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <string>
+
+namespace tri {
+
+enum class TangentialModel {
+  history,   // LIGGGHTS tangential_model_history: spring on the shear displacement, Coulomb cap
+  no_history // LIGGGHTS tangential_model_no_history: viscous friction capped by Coulomb
+};
+
+// One struct of coefficients, the values of LIGGGHTS's `fix property/global` entries for
+// hooke/stiffness (looked up and mixed by the host for the pair's atom types).
+struct ContactCoefficients {
+  double kn = 0.0;     // N/m, normal stiffness
+  double kt = 0.0;     // N/m, tangential stiffness (history model)
+  double gamman = 0.0; // 1/s (multiplied by m_eff), or kg/s with absolute_damping
+  double gammat = 0.0; // 1/s (multiplied by m_eff), or kg/s with absolute_damping
+  double mu = 0.0;     // coefficient of friction, >= 0
+  bool absolute_damping = false; // LIGGGHTS `absolute_damping on`: gammas are kg/s
+  // LIGGGHTS `limitForce on`: F_n >= 0 (no attraction from the damper). LIGGGHTS's default is
+  // off; the tri/gran deck default is on (repulsive only, as in the paper).
+  bool limit_force = false;
+  bool tangential_damping = true; // LIGGGHTS `tangential_damping on` (its default)
+  TangentialModel tangential = TangentialModel::history;
+};
+
+// Empty when the coefficients are usable, else a message naming the offending one (the host
+// turns it into error->all with the keyword). Checks finiteness and non-negativity.
+std::string coefficient_error(const ContactCoefficients &c);
+
+// m_eff = m_a m_b / (m_a + m_b), kg. A body with mass <= 0 or infinite is immovable (a wall):
+// m_eff is then the other mass.
+double effective_mass(double mass_a, double mass_b);
+
+// Normal sub-model, hooke/stiffness: F_n = kn overlap - gamma_n v_n, with gamma_n = gamman
+// m_eff (or gamman with absolute_damping); clamped to >= 0 with limit_force. overlap in m.
+double normal_force(const ContactCoefficients &c, double overlap, double v_n, double m_eff);
+
+// Tangential sub-model `history`. `shear` (m) is the contact's shear displacement, updated in
+// place:  shear += v_t dt;  shear -= (shear . n) n  (onto the current tangent plane);
+// F_t = -kt shear; if |F_t| > mu |F_n|: F_t *= mu |F_n| / |F_t| and shear = -F_t / kt
+// (Coulomb cap; F_t = 0 if shear is zero), else F_t -= gamma_t v_t when tangential_damping
+// (gamma_t = gammat m_eff, or gammat with absolute_damping). Returns F_t (N) on b.
+Eigen::Vector3d tangential_force_history(const ContactCoefficients &c, const Eigen::Vector3d &n,
+                                         const Eigen::Vector3d &v_t, double f_n, double m_eff,
+                                         double dt, Eigen::Vector3d &shear);
+
+// Tangential sub-model `no_history`: F_t = -min(gamma_t |v_t|, mu |F_n|) v_t / |v_t|, zero when
+// v_t = 0 (gamma_t as above). tangential_damping does not apply: here friction IS damping.
+Eigen::Vector3d tangential_force_no_history(const ContactCoefficients &c,
+                                            const Eigen::Vector3d &v_t, double f_n,
+                                            double m_eff);
+
+// State of a rigid body at the start of the force computation. For a wall: mass <= 0 (or
+// infinite), v the wall's velocity at the contact, omega zero (x is then irrelevant).
+struct BodyState {
+  Eigen::Vector3d x = Eigen::Vector3d::Zero();     // m, centre of mass
+  Eigen::Vector3d v = Eigen::Vector3d::Zero();     // m/s
+  Eigen::Vector3d omega = Eigen::Vector3d::Zero(); // rad/s, world frame
+  double mass = 0.0;                               // kg
+};
+
+struct ContactKinematics {
+  Eigen::Vector3d v_rel; // m/s, b relative to a at the contact point
+  double v_n;            // m/s, v_rel . n (negative approaching)
+  Eigen::Vector3d v_t;   // m/s, v_rel - v_n n
+};
+
+ContactKinematics contact_kinematics(const Eigen::Vector3d &p, const Eigen::Vector3d &n,
+                                     const BodyState &a, const BodyState &b);
+
+} // namespace tri

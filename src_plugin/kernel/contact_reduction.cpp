@@ -1,0 +1,335 @@
+// Reduction of triangle-pair contacts to contact points; the design is in the header.
+#include "contact_reduction.h"
+
+#include <algorithm>
+#include <limits>
+#include <numeric>
+
+namespace tri {
+namespace {
+
+using Eigen::Vector3d;
+using Raw = ReductionWorkspace::Raw;
+
+bool finite(const Vector3d &v) { return std::isfinite(v.x() + v.y() + v.z()); }
+
+// A unit reference direction whatever the caller passed.
+Vector3d safe_reference(const Vector3d &ref) {
+  const double len = ref.norm();
+  if (std::isfinite(len) && len > 0.0)
+    return ref / len;
+  return Vector3d::UnitZ();
+}
+
+// Unit normal of one raw contact: the kernel's; for a separated pair whose normal is unusable,
+// the closest-point direction; else the reference direction.
+Vector3d raw_normal(const TriangleContact &c, const Vector3d &ref) {
+  const double len = c.normal.norm();
+  if (std::isfinite(len) && len > 0.5)
+    return c.normal / len;
+  const Vector3d d = c.point_b - c.point_a;
+  const double dl = d.norm();
+  if (!c.intersecting && std::isfinite(dl) && dl > 0.0)
+    return d / dl;
+  return ref;
+}
+
+// Strict total order of raw contacts: deepest first, then triangle ids, then coordinates.
+bool deeper(const Raw &a, const Raw &b) {
+  if (a.overlap != b.overlap)
+    return a.overlap > b.overlap;
+  if (a.tri_a != b.tri_a)
+    return a.tri_a < b.tri_a;
+  if (a.tri_b != b.tri_b)
+    return a.tri_b < b.tri_b;
+  for (int k = 0; k < 3; ++k)
+    if (a.point[k] != b.point[k])
+      return a.point[k] < b.point[k];
+  return false;
+}
+
+int find(std::vector<int> &parent, int i) {
+  while (parent[i] != i) {
+    parent[i] = parent[parent[i]];
+    i = parent[i];
+  }
+  return i;
+}
+
+// Union by smaller index, so every root is the deepest member of its component.
+void unite(std::vector<int> &parent, int i, int j) {
+  i = find(parent, i);
+  j = find(parent, j);
+  if (i < j)
+    parent[j] = i;
+  else if (j < i)
+    parent[i] = j;
+}
+
+// Connected components of the raw points (already sorted) under |p_i - p_j| <= link; a sweep
+// along the axis of largest extent keeps the pair tests near-linear for a patch.
+void link_components(const std::vector<Raw> &raw, double link, std::vector<int> &parent,
+                     std::vector<int> &order) {
+  const int n = static_cast<int>(raw.size());
+  parent.resize(n);
+  std::iota(parent.begin(), parent.end(), 0);
+  Vector3d lo = Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (const Raw &r : raw) {
+    lo = lo.cwiseMin(r.point);
+    hi = hi.cwiseMax(r.point);
+  }
+  int axis = 0;
+  (hi - lo).maxCoeff(&axis);
+  order.resize(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int i, int j) {
+    if (raw[i].point[axis] != raw[j].point[axis])
+      return raw[i].point[axis] < raw[j].point[axis];
+    return i < j;
+  });
+  const double link2 = link * link;
+  for (int s = 0; s < n; ++s) {
+    const Raw &ri = raw[order[s]];
+    for (int t = s + 1; t < n; ++t) {
+      const Raw &rj = raw[order[t]];
+      if (rj.point[axis] - ri.point[axis] > link)
+        break;
+      if ((rj.point - ri.point).squaredNorm() <= link2)
+        unite(parent, order[s], order[t]);
+    }
+  }
+}
+
+// Deep penetration: in a component with intersecting pairs, separated pairs that face against
+// them are seen from behind the other surface; flip them (header, "Intersecting triangles").
+void flip_sunk_members(std::vector<Raw> &raw, const std::vector<int> &members, double layer,
+                       const Vector3d &ref) {
+  Vector3d mean = Vector3d::Zero();
+  bool any = false;
+  for (int i : members)
+    if (raw[i].intersecting) {
+      mean += raw[i].overlap * raw[i].normal;
+      any = true;
+    }
+  if (!any)
+    return;
+  const double len = mean.norm();
+  mean = (std::isfinite(len) && len > 0.0) ? Vector3d(mean / len) : ref;
+  for (int i : members) {
+    Raw &r = raw[i];
+    if (!r.intersecting && r.normal.dot(mean) < 0.0) {
+      r.normal = -r.normal;
+      r.overlap = layer + r.distance;
+    }
+  }
+}
+
+struct Class {
+  int seed;      // index into raw of the deepest member
+  int component; // root index
+  bool alive;
+};
+
+// Members of class `s`, measured along class m's normal, overlap no more than m does.
+bool absorbed_by(const std::vector<Raw> &raw, const std::vector<int> &members,
+                 const std::vector<int> &cls, int s, const Raw &mseed, double layer) {
+  const double tol = 1e-6 * layer;
+  for (int i : members) {
+    if (cls[i] != s)
+      continue;
+    if (layer - raw[i].separation.dot(mseed.normal) > mseed.overlap + tol)
+      return false;
+  }
+  return true;
+}
+
+ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &members,
+                        const std::vector<int> &cls, int c, int seed, const Vector3d &ref) {
+  ContactPoint p;
+  Vector3d sum_p = Vector3d::Zero(), sum_n = Vector3d::Zero();
+  double sum_w = 0.0;
+  p.min_distance = std::numeric_limits<double>::infinity();
+  for (int i : members) {
+    if (cls[i] != c)
+      continue;
+    const Raw &r = raw[i];
+    sum_p += r.overlap * r.point;
+    sum_n += r.overlap * r.normal;
+    sum_w += r.overlap;
+    p.min_distance = std::min(p.min_distance, r.distance);
+    p.intersecting = p.intersecting || r.intersecting;
+    ++p.num_merged;
+  }
+  const Raw &s = raw[seed];
+  p.point = sum_p / sum_w;
+  p.overlap = s.overlap;
+  p.tri_a = s.tri_a;
+  p.tri_b = s.tri_b;
+  const double len = sum_n.norm();
+  if (std::isfinite(len) && len > 1e-3 * sum_w)
+    p.normal = sum_n / len;
+  else
+    p.normal = finite(s.normal) ? s.normal : ref;
+  return p;
+}
+
+void reduce_clusters(std::vector<Raw> &raw, double layer, const ReductionParams &params,
+                     const Vector3d &ref, ReductionWorkspace &work,
+                     std::vector<ContactPoint> &out) {
+  const int n = static_cast<int>(raw.size());
+  link_components(raw, params.link_length, work.parent, work.order);
+  // Members of each component, components in the order of their deepest member.
+  std::vector<int> &label = work.label;
+  label.resize(n);
+  for (int i = 0; i < n; ++i)
+    label[i] = find(work.parent, i);
+  std::vector<int> &members = work.order; // reused: all indices grouped by component
+  members.resize(n);
+  std::iota(members.begin(), members.end(), 0);
+  std::stable_sort(members.begin(), members.end(),
+                   [&](int i, int j) { return label[i] < label[j]; });
+
+  const double cos_split = std::cos(params.split_angle);
+  std::vector<int> &cls = work.cls;
+  cls.assign(n, -1);
+  std::vector<Class> classes;
+  std::vector<int> group;
+  for (int begin = 0; begin < n;) {
+    int end = begin;
+    while (end < n && label[members[end]] == label[members[begin]])
+      ++end;
+    group.assign(members.begin() + begin, members.begin() + end);
+    flip_sunk_members(raw, group, layer, ref);
+    // Deepest first again after the flips (ties keep the sorted order: indices).
+    std::sort(group.begin(), group.end(), [&](int i, int j) {
+      if (raw[i].overlap != raw[j].overlap)
+        return raw[i].overlap > raw[j].overlap;
+      return i < j;
+    });
+    const int first_class = static_cast<int>(classes.size());
+    for (int seed : group) {
+      if (cls[seed] >= 0)
+        continue;
+      const int c = static_cast<int>(classes.size());
+      classes.push_back({seed, label[seed], true});
+      for (int i : group)
+        if (cls[i] < 0 && raw[i].normal.dot(raw[seed].normal) >= cos_split)
+          cls[i] = c;
+    }
+    // Rim absorption: a later class into the first earlier (deeper) one that explains it.
+    for (int s = first_class + 1; s < static_cast<int>(classes.size()); ++s) {
+      const Raw &sseed = raw[classes[s].seed];
+      for (int m = first_class; m < s; ++m) {
+        if (!classes[m].alive)
+          continue;
+        const Raw &mseed = raw[classes[m].seed];
+        if (sseed.normal.dot(mseed.normal) <= 0.0 ||
+            !absorbed_by(raw, group, cls, s, mseed, layer))
+          continue;
+        for (int i : group)
+          if (cls[i] == s)
+            cls[i] = m;
+        classes[s].alive = false;
+        break;
+      }
+    }
+    for (int c = first_class; c < static_cast<int>(classes.size()); ++c)
+      if (classes[c].alive)
+        out.push_back(make_point(raw, group, cls, c, classes[c].seed, ref));
+    begin = end;
+  }
+  // Deepest first; ties keep component/class order (deterministic).
+  std::stable_sort(out.begin(), out.end(), [](const ContactPoint &a, const ContactPoint &b) {
+    return a.overlap > b.overlap;
+  });
+}
+
+ContactPoint single_point(const Raw &r) {
+  ContactPoint p;
+  p.point = r.point;
+  p.normal = r.normal;
+  p.overlap = r.overlap;
+  p.min_distance = r.distance;
+  p.num_merged = 1;
+  p.intersecting = r.intersecting;
+  p.tri_a = r.tri_a;
+  p.tri_b = r.tri_b;
+  return p;
+}
+
+} // namespace
+
+double recommended_link_length(double longest_edge_a, double longest_edge_b, double eps_a,
+                               double eps_b) {
+  const double edge = std::min(longest_edge_a, longest_edge_b);
+  return (2.0 * edge + eps_a + eps_b) * (1.0 + 1e-9);
+}
+
+void reduce_contacts(const TriangleContact *contacts, int n, double eps_a, double eps_b,
+                     const ReductionParams &params, ReductionWorkspace &work,
+                     std::vector<ContactPoint> &out) {
+  out.clear();
+  const double layer = eps_a + eps_b;
+  const Vector3d ref = safe_reference(params.reference_direction);
+  std::vector<Raw> &raw = work.raw;
+  raw.clear();
+  for (int k = 0; k < n; ++k) {
+    const TriangleContact &c = contacts[k];
+    const double distance = c.intersecting ? 0.0 : std::max(0.0, c.distance);
+    const double overlap = layer - distance;
+    if (!(overlap > 0.0))
+      continue;
+    Raw r;
+    r.point = 0.5 * (c.point_a + c.point_b);
+    if (!finite(r.point))
+      continue; // nothing sensible to place; the kernel never produces this
+    r.normal = raw_normal(c, ref);
+    r.separation = c.intersecting ? Vector3d::Zero() : Vector3d(c.point_b - c.point_a);
+    r.overlap = overlap;
+    r.distance = distance;
+    r.tri_a = c.tri_a;
+    r.tri_b = c.tri_b;
+    r.intersecting = c.intersecting;
+    raw.push_back(r);
+  }
+  std::sort(raw.begin(), raw.end(), deeper);
+  if (raw.empty())
+    return;
+
+  switch (params.method) {
+  case ReductionMethod::none:
+    for (const Raw &r : raw)
+      out.push_back(single_point(r));
+    return;
+  case ReductionMethod::paper_min_width: {
+    const double w2 = params.min_width * params.min_width;
+    for (const Raw &r : raw) {
+      bool near = false;
+      for (ContactPoint &p : out)
+        if ((p.point - r.point).squaredNorm() < w2) {
+          ++p.num_merged;
+          near = true;
+          break;
+        }
+      if (!near)
+        out.push_back(single_point(r));
+    }
+    return;
+  }
+  case ReductionMethod::clusters:
+    reduce_clusters(raw, layer, params, ref, work, out);
+    return;
+  }
+}
+
+std::vector<ContactPoint> reduce_contacts(const std::vector<TriangleContact> &contacts,
+                                          double eps_a, double eps_b,
+                                          const ReductionParams &params) {
+  ReductionWorkspace work;
+  std::vector<ContactPoint> out;
+  reduce_contacts(contacts.data(), static_cast<int>(contacts.size()), eps_a, eps_b, params, work,
+                  out);
+  return out;
+}
+
+} // namespace tri

@@ -1,0 +1,141 @@
+// Contact points of one particle pair (or particle-wall pair) from its triangle-pair
+// contacts, reduced so that the summed force does not depend on how finely a face is meshed.
+//
+// Contact geometry (paper, section 2): every particle carries a soft layer, eps_a and eps_b
+// (m). A triangle pair closer than eps_a + eps_b is a raw contact with
+//   point   = (point_a + point_b) / 2          midway between the closest points (m, world)
+//   normal  = the kernel's normal, unit, from a towards b
+//   overlap = eps_a + eps_b - distance          (m, > 0; intersecting pairs: eps_a + eps_b)
+//
+// Why a reduction, and why this one. Two flat faces in contact produce one raw contact per
+// triangle pair whose closest points lie in the soft layers: their number grows with the
+// square of the mesh resolution, and a force per raw contact makes the stiffness of a
+// resting cube grow with it. The paper's rule (drop points closer than the minimum mesh
+// width) removes near-duplicates only: the surviving count still grows with resolution
+// (test ReductionPaperBaseline.CountGrowsWithResolution). Here one contact patch -- a
+// connected piece of the overlap of the two soft layers -- gives ONE contact point:
+//  1. Spatial connectivity (union-find): two raw points are linked when they are closer than
+//     `link_length`. Closest points of a triangle pair lie on both triangles, so the raw
+//     points of two edge-adjacent triangles of the finer mesh are at most
+//     2 * longest edge + (eps_a + eps_b) apart (the midpoint moves by half the gap):
+//     recommended_link_length() returns that bound, so a patch is never torn apart by the
+//     mesh, at any resolution, while regions farther apart stay separate (a non-convex
+//     particle touching in two places).
+//  2. Normal classes inside a connected region: the deepest unassigned raw contact seeds a
+//     class that takes every unassigned member whose normal is within `split_angle` of the
+//     seed's. A particle wedged in a corner (two faces at 90 degrees whose patches meet at an
+//     edge) thus keeps one contact per face.
+//  3. Rim absorption: near the border of a flat patch, triangles of the other mesh that lie
+//     just outside the footprint see the patch's EDGE at a slant (normal tilted up to ~90
+//     degrees, small overlap). Their number depends on the mesh, so they must not become
+//     contacts of their own. A class S is absorbed into an earlier (deeper) class M of the
+//     same region when n_S . n_M > 0 and every member j of S, measured along M's normal,
+//     overlaps no more than M does: (eps_a + eps_b) - s_j . n_M <= overlap_M (+ 1e-6 of the
+//     layer), s_j = point_b - point_a being j's separation vector. Rim contacts satisfy this
+//     exactly (their separation along n_M is the patch's own gap); a second face at 90
+//     degrees or more never does.
+//  4. One ContactPoint per class: point = overlap-weighted centroid of the members' points,
+//     normal = overlap-weighted mean of their normals (renormalised), overlap = the largest
+//     member overlap (so a flat patch at uniform gap gives exactly eps_a + eps_b - gap,
+//     whatever the mesh), min_distance = the smallest member distance (for the paper's
+//     time-step rule).
+//
+// Intersecting triangles (real surfaces crossing: the soft layer was overrun). The kernel's
+// normal for such a pair (minimum-overlap separating axis) is used when finite; otherwise
+// `reference_direction` (a unit vector from a towards b that the caller supplies: the line of
+// centres for two particles, the wall's normal towards the wall for a wall). In a connected
+// region that contains intersecting pairs, non-intersecting pairs whose normal points against
+// the intersecting pairs' mean normal are triangles that went THROUGH the other surface (a
+// face sunk below a plane sees the plane from behind): their normal is flipped and their
+// overlap is eps_a + eps_b + distance, so the force keeps growing with penetration instead of
+// changing sign. A class whose weighted mean normal degenerates (opposite normals cancel)
+// takes the seed's normal, and if that is not finite the reference direction: every output
+// normal is finite and unit.
+//
+// Determinism: the raw contacts are sorted first (overlap descending, then tri_a, tri_b, then
+// the point's coordinates) and every later step and every sum runs in that order, so the
+// output is bit-identical for any permutation of the input (e.g. any thread count upstream).
+// Output order: deepest contact first.
+//
+// Cost: O(n log n) for n raw contacts (sort + sweep along x for the links), plus
+// O(n * classes) for the normal split; no allocation when the workspace is reused.
+#pragma once
+
+#if __has_include("particle_contacts.h")
+#include "particle_contacts.h"
+#else
+// Until the distance kernel's header lands: the same definition (see the brief of issue 4).
+#include <Eigen/Core>
+namespace tri {
+struct TriangleContact {
+  int tri_a, tri_b;
+  double distance;
+  Eigen::Vector3d point_a, point_b;
+  Eigen::Vector3d normal;
+  bool intersecting;
+};
+} // namespace tri
+#endif
+
+#include <Eigen/Core>
+
+#include <cmath>
+#include <vector>
+
+namespace tri {
+
+struct ContactPoint {
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();  // m, world frame
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ(); // unit, from a towards b
+  double overlap = 0.0;      // m, > 0: eps_a + eps_b - (signed) distance of the deepest member
+  double min_distance = 0.0; // m, >= 0: smallest closest-point distance among the members
+  int num_merged = 0;        // raw triangle-pair contacts represented by this point
+  bool intersecting = false; // some member's triangles intersect
+  int tri_a = -1, tri_b = -1; // the deepest member's triangles (diagnostics)
+};
+
+enum class ReductionMethod {
+  clusters,        // the reduction described above (default)
+  paper_min_width, // the paper's baseline: drop points closer than min_width to a deeper one
+  none             // one ContactPoint per raw contact (validation studies only)
+};
+
+struct ReductionParams {
+  ReductionMethod method = ReductionMethod::clusters;
+  double link_length = 0.0;  // m, clusters: see recommended_link_length(); must be > 0
+  double split_angle = 0.7853981633974483; // rad (45 deg), clusters: normal-class half-angle
+  double min_width = 0.0;    // m, paper_min_width: the minimum mesh width of the two meshes
+  // Unit, from a towards b; used only where a normal is otherwise undefined (see above).
+  Eigen::Vector3d reference_direction = Eigen::Vector3d::UnitZ();
+};
+
+// The link length that keeps every contact patch connected: 2 * min(longest edge of a,
+// longest edge of b) + eps_a + eps_b, plus a relative 1e-9 for rounding. A wall's longest edge
+// may be passed as infinity (the particle's then decides).
+double recommended_link_length(double longest_edge_a, double longest_edge_b, double eps_a,
+                               double eps_b);
+
+// Scratch space; reuse one per thread to avoid allocations in the pair loop.
+struct ReductionWorkspace {
+  struct Raw {
+    Eigen::Vector3d point, normal, separation; // separation = point_b - point_a
+    double overlap, distance;
+    int tri_a, tri_b;
+    bool intersecting;
+  };
+  std::vector<Raw> raw;
+  std::vector<int> parent, order, label, cls;
+};
+
+// Reduces `n` triangle-pair contacts of one pair (entries with overlap <= 0 are ignored) and
+// writes the contact points into `out` (cleared first), deepest first. eps_a, eps_b >= 0 (m).
+void reduce_contacts(const TriangleContact *contacts, int n, double eps_a, double eps_b,
+                     const ReductionParams &params, ReductionWorkspace &work,
+                     std::vector<ContactPoint> &out);
+
+// Convenience form for tests and tools.
+std::vector<ContactPoint> reduce_contacts(const std::vector<TriangleContact> &contacts,
+                                          double eps_a, double eps_b,
+                                          const ReductionParams &params);
+
+} // namespace tri
