@@ -1,0 +1,370 @@
+// read_mesh_file: the same shape written as ASCII STL, binary STL, OBJ and PLY (by the tiny
+// writers below, at run time, into a temporary directory) reads back with the same mass
+// properties; broken files give a MeshFileError that starts with the path and says what.
+#include "mesh_reader.h"
+#include "shape.h"
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <map>
+#include <string>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Box [0,a] x [0,b] x [0,c] moved by `shift`; vertex i has x = a (i&1), y = b (i&2), z = c (i&4).
+tri::TriangleMesh box(double a, double b, double c, const Eigen::Vector3d &shift) {
+  tri::TriangleMesh m;
+  for (int i = 0; i < 8; ++i)
+    m.vertices.push_back(Eigen::Vector3d(a * (i & 1), b * ((i >> 1) & 1), c * ((i >> 2) & 1)) +
+                         shift);
+  m.triangles = {{0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}, {0, 1, 5}, {0, 5, 4},
+                 {2, 6, 7}, {2, 7, 3}, {0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}};
+  return m;
+}
+
+// Octahedron subdivided `level` times onto a sphere of radius r: a many-triangle test shape
+// whose coordinates are not representable exactly in float (as in real files).
+tri::TriangleMesh sphere(int level, double r) {
+  tri::TriangleMesh m;
+  m.vertices = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  m.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
+                 {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+  for (int l = 0; l < level; ++l) {
+    std::map<std::pair<int, int>, int> midpoint;
+    auto mid = [&](int a, int b) {
+      const auto key = std::minmax(a, b);
+      if (auto it = midpoint.find(key); it != midpoint.end())
+        return it->second;
+      m.vertices.push_back((m.vertices[a] + m.vertices[b]).normalized());
+      return midpoint[key] = m.num_vertices() - 1;
+    };
+    std::vector<std::array<int, 3>> finer;
+    for (const auto &t : m.triangles) {
+      const int ab = mid(t[0], t[1]), bc = mid(t[1], t[2]), ca = mid(t[2], t[0]);
+      finer.insert(finer.end(), {{t[0], ab, ca}, {t[1], bc, ab}, {t[2], ca, bc}, {ab, bc, ca}});
+    }
+    m.triangles = std::move(finer);
+  }
+  for (auto &v : m.vertices)
+    v = r * v + Eigen::Vector3d(0.01, -0.02, 0.03);
+  return m;
+}
+
+// --- tiny writers: just enough of each format -------------------------------------------
+
+void write_ascii_stl(const fs::path &path, const tri::TriangleMesh &m) {
+  std::ofstream out(path);
+  out.precision(17);
+  out << "solid test\n";
+  for (int t = 0; t < m.num_triangles(); ++t) {
+    out << "  facet normal 0 0 0\n    outer loop\n";
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector3d &p = m.corner(t, k);
+      out << "      vertex " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+    }
+    out << "    endloop\n  endfacet\n";
+  }
+  out << "endsolid test\n";
+}
+
+void put_u32(std::ofstream &out, std::uint32_t v) {
+  const unsigned char b[4] = {static_cast<unsigned char>(v), static_cast<unsigned char>(v >> 8),
+                              static_cast<unsigned char>(v >> 16),
+                              static_cast<unsigned char>(v >> 24)};
+  out.write(reinterpret_cast<const char *>(b), 4);
+}
+void put_f32(std::ofstream &out, double v) { // little-endian IEEE float, as STL requires
+  const float f = static_cast<float>(v);
+  std::uint32_t u;
+  std::memcpy(&u, &f, 4);
+  put_u32(out, u);
+}
+
+void write_binary_stl(const fs::path &path, const tri::TriangleMesh &m,
+                      const std::string &header = "binary test") {
+  std::ofstream out(path, std::ios::binary);
+  std::string h = header;
+  h.resize(80, ' ');
+  out.write(h.data(), 80);
+  put_u32(out, static_cast<std::uint32_t>(m.num_triangles()));
+  for (int t = 0; t < m.num_triangles(); ++t) {
+    for (int i = 0; i < 3; ++i)
+      put_f32(out, 0.0); // normal: readers recompute it
+    for (int k = 0; k < 3; ++k)
+      for (int i = 0; i < 3; ++i)
+        put_f32(out, m.corner(t, k)[i]);
+    out.write("\0\0", 2); // attribute byte count
+  }
+}
+
+void write_obj(const fs::path &path, const tri::TriangleMesh &m) {
+  std::ofstream out(path);
+  out.precision(17);
+  out << "# test\no shape\n";
+  for (const auto &v : m.vertices)
+    out << "v " << v.x() << ' ' << v.y() << ' ' << v.z() << '\n';
+  for (const auto &t : m.triangles)
+    out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+}
+
+void write_ascii_ply(const fs::path &path, const tri::TriangleMesh &m) {
+  std::ofstream out(path);
+  out.precision(17);
+  out << "ply\nformat ascii 1.0\nelement vertex " << m.num_vertices()
+      << "\nproperty double x\nproperty double y\nproperty double z\nelement face "
+      << m.num_triangles() << "\nproperty list uchar int vertex_indices\nend_header\n";
+  for (const auto &v : m.vertices)
+    out << v.x() << ' ' << v.y() << ' ' << v.z() << '\n';
+  for (const auto &t : m.triangles)
+    out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+}
+
+void write_binary_ply(const fs::path &path, const tri::TriangleMesh &m) {
+  std::ofstream out(path, std::ios::binary);
+  out << "ply\nformat binary_little_endian 1.0\ncomment test\nelement vertex " << m.num_vertices()
+      << "\nproperty float x\nproperty float y\nproperty float z\n"
+      << "element face " << m.num_triangles()
+      << "\nproperty list uchar int vertex_indices\nend_header\n";
+  for (const auto &v : m.vertices)
+    for (int i = 0; i < 3; ++i)
+      put_f32(out, v[i]);
+  for (const auto &t : m.triangles) {
+    out.put(3);
+    for (int v : t)
+      put_u32(out, static_cast<std::uint32_t>(v));
+  }
+}
+
+void write_text(const fs::path &path, const std::string &text) { std::ofstream(path) << text; }
+
+void truncate_to(const fs::path &path, std::uintmax_t size) { fs::resize_file(path, size); }
+
+class MeshReader : public ::testing::Test {
+protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("tri_mesh_reader_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  fs::path file(const std::string &name) const { return dir_ / name; }
+
+  // The MeshFileError message for reading `path` ("" if it reads), with a check that VTK
+  // printed nothing.
+  static std::string read_error(const fs::path &path) {
+    ::testing::internal::CaptureStderr();
+    ::testing::internal::CaptureStdout();
+    std::string message;
+    try {
+      tri::read_mesh_file(path.string());
+    } catch (const tri::MeshFileError &e) {
+      message = e.what();
+    }
+    const std::string printed =
+        ::testing::internal::GetCapturedStderr() + ::testing::internal::GetCapturedStdout();
+    EXPECT_EQ(printed, "") << "reading " << path << " printed to the terminal";
+    return message;
+  }
+
+  fs::path dir_;
+};
+
+::testing::AssertionResult StartsWithPathAndSays(const std::string &message, const fs::path &path,
+                                                 const std::string &phrase) {
+  if (message.rfind(path.string() + ": ", 0) == 0 && message.find(phrase) != std::string::npos)
+    return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "message \"" << message << "\" should start with \""
+                                       << path.string() << ": \" and contain \"" << phrase << "\"";
+}
+
+void expect_same_shape(const tri::Shape &read, const tri::Shape &original, double rel) {
+  EXPECT_EQ(read.mesh.num_triangles(), original.mesh.num_triangles());
+  EXPECT_EQ(read.mesh.num_vertices(), original.mesh.num_vertices()); // corners merged
+  EXPECT_NEAR(read.volume, original.volume, rel * original.volume);
+  EXPECT_NEAR((read.inertia_per_density - original.inertia_per_density).norm(), 0.0,
+              rel * original.inertia_per_density.norm());
+  EXPECT_NEAR(read.bounding_radius, original.bounding_radius, rel * original.bounding_radius);
+}
+
+TEST_F(MeshReader, AllFormatsGiveTheSameShape) {
+  for (const auto &[name, mesh] :
+       {std::pair{std::string("box"), box(3, 1, 2, Eigen::Vector3d(5, -4, 3))},
+        std::pair{std::string("sphere"), sphere(3, 0.002)}}) {
+    SCOPED_TRACE(name);
+    const tri::Shape original = tri::make_shape(name, mesh);
+    write_ascii_stl(file(name + "_ascii.stl"), mesh);
+    write_binary_stl(file(name + "_binary.stl"), mesh);
+    write_obj(file(name + ".obj"), mesh);
+    write_ascii_ply(file(name + ".ply"), mesh);
+    write_binary_ply(file(name + "_binary.ply"), mesh);
+    for (const char *f : {"_ascii.stl", "_binary.stl", ".obj", ".ply", "_binary.ply"}) {
+      SCOPED_TRACE(f);
+      const fs::path path = file(name + f);
+      const tri::Shape read = tri::make_shape(name, tri::read_mesh_file(path.string()));
+      // Binary STL stores floats, and VTK's readers keep every format's points as floats:
+      // 6e-8 relative per coordinate. The box's coordinates are exact in float.
+      expect_same_shape(read, original, name == "box" ? 1e-14 : 1e-6);
+    }
+  }
+}
+
+TEST_F(MeshReader, ExtensionIsCaseInsensitive) {
+  write_binary_stl(file("BOX.STL"), box(1, 2, 3, Eigen::Vector3d::Zero()));
+  EXPECT_EQ(tri::read_mesh_file(file("BOX.STL").string()).num_triangles(), 12);
+}
+
+TEST_F(MeshReader, BinaryStlWhoseHeaderSaysSolid) {
+  // Some CAD exporters start the binary header with "solid"; the size identifies it.
+  const tri::TriangleMesh mesh = box(3, 1, 2, Eigen::Vector3d::Zero());
+  write_binary_stl(file("solid.stl"), mesh, "solid exported by some CAD tool");
+  const tri::Shape s = tri::make_shape("s", tri::read_mesh_file(file("solid.stl").string()));
+  EXPECT_NEAR(s.volume, 6.0, 1e-12);
+}
+
+TEST_F(MeshReader, QuadFacesAreTriangulated) {
+  write_text(file("quads.obj"),
+             "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n"
+             "v 0 0 1\nv 1 0 1\nv 0 1 1\nv 1 1 1\n"
+             "f 1 5 7 3\nf 2 4 8 6\nf 1 2 6 5\nf 3 7 8 4\nf 1 3 4 2\nf 5 6 8 7\n");
+  const tri::TriangleMesh m = tri::read_mesh_file(file("quads.obj").string());
+  EXPECT_EQ(m.num_triangles(), 12);
+  EXPECT_NEAR(tri::make_shape("cube", m).volume, 1.0, 1e-14);
+}
+
+TEST_F(MeshReader, TruncatedBinaryStl) {
+  const fs::path path = file("cut.stl");
+  write_binary_stl(path, box(3, 1, 2, Eigen::Vector3d::Zero()));
+  truncate_to(path, 84 + 50 * 12 - 20);
+  EXPECT_TRUE(StartsWithPathAndSays(read_error(path), path,
+                                    "binary STL is truncated or malformed: its header announces "
+                                    "12 triangles (684 bytes) but the file has 664 bytes"));
+}
+
+TEST_F(MeshReader, TruncatedAsciiStl) {
+  const fs::path path = file("cut_ascii.stl");
+  write_ascii_stl(path, sphere(1, 1.0));
+  truncate_to(path, fs::file_size(path) / 2);
+  EXPECT_TRUE(StartsWithPathAndSays(read_error(path), path, "ASCII STL is truncated"));
+}
+
+TEST_F(MeshReader, MalformedAsciiStl) {
+  // Complete on the outside, garbage inside: VTK's complaint becomes the exception.
+  const fs::path path = file("bad_ascii.stl");
+  write_text(path, "solid x\n  facet normal 0 0 0\n    outer loop\n      vertex 0 0 zero\n"
+                   "      vertex 1 0 0\n      vertex 0 1 0\n    endloop\n  endfacet\nendsolid x\n");
+  EXPECT_TRUE(StartsWithPathAndSays(read_error(path), path, "cannot read mesh file (STL)"));
+}
+
+TEST_F(MeshReader, GarbageContent) {
+  const std::string garbage = "this is not a mesh at all\n\x01\x02\x03 just some bytes\n";
+  const fs::path stl = file("garbage.stl");
+  write_text(stl, garbage);
+  EXPECT_TRUE(StartsWithPathAndSays(read_error(stl), stl, "not an STL file"));
+  const fs::path obj = file("garbage.obj");
+  write_text(obj, garbage);
+  EXPECT_TRUE(StartsWithPathAndSays(read_error(obj), obj, "contains no triangles"));
+  const fs::path ply = file("garbage.ply");
+  write_text(ply, garbage);
+  EXPECT_TRUE(StartsWithPathAndSays(read_error(ply), ply, "not a PLY file"));
+}
+
+TEST_F(MeshReader, TruncatedPly) {
+  // VTK 9.1's PLY reader aborts the process on these; the reader must catch them first.
+  for (const char *format : {"ascii", "binary"}) {
+    SCOPED_TRACE(format);
+    const fs::path path = file(std::string("cut_") + format + ".ply");
+    if (std::string(format) == "ascii")
+      write_ascii_ply(path, sphere(2, 1.0));
+    else
+      write_binary_ply(path, sphere(2, 1.0));
+    truncate_to(path, fs::file_size(path) - 7); // inside the last face
+    EXPECT_TRUE(StartsWithPathAndSays(read_error(path), path,
+                                      "PLY file is truncated: face 127 of 128 is incomplete"));
+    truncate_to(path, fs::file_size(path) / 3);
+    EXPECT_TRUE(StartsWithPathAndSays(read_error(path), path, "PLY file is truncated: vertex "));
+  }
+}
+
+TEST_F(MeshReader, PlyFaceWithMissingVertex) {
+  const fs::path path = file("dangling.ply");
+  write_text(path, "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                   "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                   "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n");
+  EXPECT_TRUE(StartsWithPathAndSays(read_error(path), path,
+                                    "PLY file is malformed: face 0 refers to vertex 3, but there "
+                                    "are 3 vertices"));
+}
+
+TEST_F(MeshReader, ObjFaceWithMissingVertex) {
+  const fs::path path = file("dangling.obj");
+  write_text(path, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 9\n");
+  EXPECT_TRUE(StartsWithPathAndSays(read_error(path), path,
+                                    "mesh file is malformed: face 1 refers to vertex 9 (1-based), "
+                                    "but there are 3 vertices"));
+}
+
+TEST_F(MeshReader, TruncatedObj) {
+  // Cut inside a face line: VTK's complaint becomes the exception. (Cut at a line end, an
+  // OBJ simply has fewer faces; make_shape then reports the hole.)
+  const fs::path path = file("cut.obj");
+  write_text(path, "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4");
+  EXPECT_TRUE(StartsWithPathAndSays(read_error(path), path,
+                                    "cannot read mesh file (OBJ): VTK reported: Error reading file "
+                                    "near line 8"));
+}
+
+TEST_F(MeshReader, MissingFile) {
+  const fs::path path = file("nowhere.stl");
+  EXPECT_TRUE(StartsWithPathAndSays(read_error(path), path, "cannot read mesh file: no such file"));
+}
+
+TEST_F(MeshReader, DirectoryIsNotAFile) {
+  const fs::path path = file("folder.stl");
+  fs::create_directory(path);
+  EXPECT_TRUE(
+      StartsWithPathAndSays(read_error(path), path, "cannot read mesh file: not a regular file"));
+}
+
+TEST_F(MeshReader, UnknownExtension) {
+  const fs::path path = file("shape.xyz");
+  write_text(path, "1 2 3\n");
+  EXPECT_TRUE(StartsWithPathAndSays(
+      read_error(path), path, "unknown mesh file extension '.xyz' (expected .stl, .obj or .ply)"));
+  const fs::path none = file("shape");
+  write_text(none, "1 2 3\n");
+  EXPECT_TRUE(StartsWithPathAndSays(read_error(none), none, "unknown mesh file extension ''"));
+}
+
+TEST_F(MeshReader, EmptyFileAndEmptyMesh) {
+  const fs::path empty = file("empty.obj");
+  write_text(empty, "");
+  EXPECT_TRUE(StartsWithPathAndSays(read_error(empty), empty, "mesh file is empty"));
+  const fs::path solid = file("nothing.stl");
+  write_text(solid, "solid nothing\nendsolid nothing\n");
+  EXPECT_TRUE(StartsWithPathAndSays(read_error(solid), solid, "mesh file contains no triangles"));
+  const fs::path points = file("points.obj");
+  write_text(points, "v 0 0 0\nv 1 0 0\nv 0 1 0\n");
+  EXPECT_TRUE(StartsWithPathAndSays(read_error(points), points, "mesh file contains no triangles"));
+}
+
+TEST_F(MeshReader, OpenMeshReadsButMakeShapeRejectsIt) {
+  // Closedness is make_shape's job: the reader returns what is in the file.
+  tri::TriangleMesh m = box(1, 1, 1, Eigen::Vector3d::Zero());
+  m.triangles.pop_back();
+  write_binary_stl(file("open.stl"), m);
+  const tri::TriangleMesh read = tri::read_mesh_file(file("open.stl").string());
+  EXPECT_EQ(read.num_triangles(), 11);
+  EXPECT_THROW(tri::make_shape("open", read), tri::ShapeError);
+}
+
+} // namespace
