@@ -368,3 +368,21 @@ TEST_F(MeshReader, OpenMeshReadsButMakeShapeRejectsIt) {
 }
 
 } // namespace
+
+namespace {
+
+TEST(ExampleMeshes, GearIsClosedAndNotConvex) {
+  // examples/falling/meshes/gear.stl (made by make_meshes.py there), in millimetres.
+  // Found from this source file (CMake compiles it by absolute path): tests/io/ -> repo root.
+  const std::string path = (fs::path(__FILE__).parent_path().parent_path().parent_path() /
+                            "examples/falling/meshes/gear.stl")
+                               .string();
+  const tri::Shape gear = tri::make_shape("gear", tri::scaled(tri::read_mesh_file(path), 0.001));
+  EXPECT_EQ(gear.mesh.num_triangles(), 128);
+  EXPECT_EQ(gear.mesh.num_vertices(), 66); // 2 x 32 outline corners + 2 cap centres
+  EXPECT_FALSE(gear.convex);
+  EXPECT_NEAR(gear.volume, 13.5315e-9, 1e-13);
+  EXPECT_NEAR(gear.bounding_radius, std::hypot(2.0, 0.75) * 1e-3, 1e-8);
+}
+
+} // namespace
