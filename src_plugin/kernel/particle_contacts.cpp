@@ -1,0 +1,167 @@
+#include "particle_contacts.h"
+
+#include "distance_kernels.h"
+#include "triangle_boxes.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <stdexcept>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+namespace tri {
+
+ContactStats &ContactStats::operator+=(const ContactStats &o) {
+  triangle_pairs_tested += o.triangle_pairs_tested;
+  triangle_pairs_culled += o.triangle_pairs_culled;
+  contacts += o.contacts;
+  penalty_pairs += o.penalty_pairs;
+  fallbacks += o.fallbacks;
+  for (int k = 0; k <= kMaxPenaltyIterations; ++k)
+    newton_histogram[k] += o.newton_histogram[k];
+  return *this;
+}
+
+namespace {
+
+// Scratch reused across calls on the same thread, so that a call allocates nothing once
+// the buffers have grown. Holds no state that outlives a call.
+struct Workspace {
+  TriangleBoxes boxes_a, boxes_b;
+  std::vector<std::uint8_t> keep;
+  std::vector<TrianglePairIndex> pairs;
+  std::vector<TrianglePairDistance> results;
+};
+
+void collect_candidates(const TriangleSoA &a, const TriangleSoA &b, double margin, bool cull,
+                        Workspace &ws) {
+  const int na = a.num_triangles(), nb = b.num_triangles();
+  ws.pairs.clear();
+  if (!cull) {
+    ws.pairs.reserve(static_cast<std::size_t>(na) * nb);
+    for (int i = 0; i < na; ++i)
+      for (int j = 0; j < nb; ++j)
+        ws.pairs.push_back({i, j});
+    return;
+  }
+  compute_triangle_boxes(a, ws.boxes_a);
+  compute_triangle_boxes(b, ws.boxes_b);
+  ws.keep.resize(static_cast<std::size_t>(nb));
+  for (int i = 0; i < na; ++i) {
+    if (overlapping_boxes(ws.boxes_a, i, ws.boxes_b, margin, ws.keep.data()) == 0)
+      continue;
+    for (int j = 0; j < nb; ++j)
+      if (ws.keep[j])
+        ws.pairs.push_back({i, j});
+  }
+}
+
+// Runs the chosen kernel on pairs [first, last) of the list; `first` is a batch boundary.
+void run_kernel(const TriangleSoA &a, const TriangleSoA &b, const ContactOptions &opt,
+                const HybridSettings &hs, const TrianglePairIndex *pairs,
+                TrianglePairDistance *results, int first, int last, HybridCounters &counters) {
+  const int n = last - first;
+  if (n <= 0)
+    return;
+  switch (opt.kernel) {
+  case DistanceKernel::BruteForce:
+    return brute_force_distances(a, b, pairs + first, n, results + first);
+  case DistanceKernel::BruteForceScalar:
+    return brute_force_scalar_distances(a, b, pairs + first, n, results + first);
+  case DistanceKernel::Penalty:
+    return penalty_distances(a, b, pairs + first, n, hs, results + first, counters);
+  case DistanceKernel::Hybrid:
+    return hybrid_distances(a, b, pairs + first, n, hs, 0, results + first, counters);
+  case DistanceKernel::BatchedHybrid:
+    return hybrid_distances(a, b, pairs + first, n, hs, opt.batch_size, results + first,
+                            counters);
+  }
+}
+
+} // namespace
+
+void find_triangle_contacts(const TriangleSoA &a, double eps_a, const TriangleSoA &b, double eps_b,
+                            const ContactOptions &opt, std::vector<TriangleContact> &out,
+                            ContactStats &stats) {
+  if (!penalty_iterations_supported(opt.newton_iterations))
+    throw std::invalid_argument("find_triangle_contacts: unsupported newton_iterations");
+  if (opt.batch_size < 1)
+    throw std::invalid_argument("find_triangle_contacts: batch_size must be >= 1");
+  static thread_local Workspace ws;
+  const double cutoff = eps_a + eps_b;
+  collect_candidates(a, b, cutoff, opt.cull, ws);
+  const int count = static_cast<int>(ws.pairs.size());
+  stats.triangle_pairs_tested += count;
+  stats.triangle_pairs_culled +=
+      static_cast<long long>(a.num_triangles()) * b.num_triangles() - count;
+  ws.results.resize(static_cast<std::size_t>(count));
+
+  HybridSettings hs;
+  hs.newton_iterations = opt.newton_iterations;
+  hs.penalty = opt.penalty;
+  hs.tolerance = opt.tolerance_ratio * std::min(eps_a, eps_b);
+  hs.cutoff = cutoff;
+
+  const TrianglePairIndex *pairs = ws.pairs.data();
+  TrianglePairDistance *results = ws.results.data();
+  HybridCounters counters;
+  // Work is split only at multiples of `unit`, so batches stay whole and blocks full.
+  const int unit = opt.kernel == DistanceKernel::BatchedHybrid ? opt.batch_size : kPairLanes;
+  switch (opt.parallel) {
+  case ContactParallelism::None:
+    run_kernel(a, b, opt, hs, pairs, results, 0, count, counters);
+    break;
+  case ContactParallelism::TrianglePairs: {
+    const int units = (count + unit - 1) / unit;
+#pragma omp parallel
+    {
+      int nthreads = 1, thread = 0;
+#ifdef _OPENMP
+      nthreads = omp_get_num_threads();
+      thread = omp_get_thread_num();
+#endif
+      const int first = std::min(count, static_cast<int>(static_cast<long long>(units) * thread /
+                                                         nthreads) * unit);
+      const int last = std::min(count, static_cast<int>(static_cast<long long>(units) *
+                                                        (thread + 1) / nthreads) * unit);
+      HybridCounters mine;
+      run_kernel(a, b, opt, hs, pairs, results, first, last, mine);
+#pragma omp critical(tri_contact_counters)
+      counters += mine;
+    }
+    break;
+  }
+  case ContactParallelism::Batches: {
+    const int batch = opt.batch_size;
+    const int batches = (count + batch - 1) / batch;
+#pragma omp parallel
+    {
+      HybridCounters mine;
+#pragma omp for schedule(static)
+      for (int k = 0; k < batches; ++k)
+        run_kernel(a, b, opt, hs, pairs, results, k * batch, std::min(count, (k + 1) * batch),
+                   mine);
+#pragma omp critical(tri_contact_counters)
+      counters += mine;
+    }
+    break;
+  }
+  }
+  stats.penalty_pairs += counters.penalty_pairs;
+  stats.fallbacks += counters.fallbacks;
+  for (int k = 0; k <= kMaxPenaltyIterations; ++k)
+    stats.newton_histogram[k] += counters.newton_histogram[k];
+
+  for (int k = 0; k < count; ++k) {
+    const TrianglePairDistance &r = results[k];
+    if (!(r.distance < cutoff))
+      continue;
+    out.push_back({pairs[k].a, pairs[k].b, r.distance, r.point_a, r.point_b, r.normal,
+                   r.intersecting, r.penetration_depth});
+    ++stats.contacts;
+  }
+}
+
+} // namespace tri

@@ -1,0 +1,86 @@
+// Triangle contacts between two particles (or a particle and a wall patch): the step of a
+// DEM time step that finds every triangle pair closer than the sum of the soft-layer
+// widths (paper, sections 2-4; DESIGN.md, "One time step", item 4).
+//
+// Steps: optional cull of triangle pairs whose bounding boxes, grown by eps_a + eps_b, do
+// not overlap (triangle_boxes.h: never drops a pair in contact); a distance kernel on the
+// remaining pairs (distance_kernels.h); every pair with distance < eps_a + eps_b reported.
+//
+// Units: lengths in the unit of the triangles (metres in the simulation); eps_a, eps_b > 0.
+// Boundary: a pair at distance exactly eps_a + eps_b is not in contact.
+// Accuracy: BruteForce / BruteForceScalar are the reference (triangle_distance.h).
+// Hybrid and BatchedHybrid report the same set of pairs as brute force, and each reported
+// distance within tolerance_ratio * min(eps_a, eps_b) of brute force's (pairs whose
+// penalty bounds straddle the cutoff are recomputed by brute force). Penalty alone is
+// unchecked (distance_kernels.h) and for studies only.
+// Threads: results (values and order) are identical for every parallel mode and thread
+// count; `parallel` opens an OpenMP parallel region inside the call, so callers that
+// parallelise over particle pairs pass ContactParallelism::None.
+#pragma once
+
+#include "penalty_distance.h"
+#include "triangle_soa.h"
+
+#include <Eigen/Core>
+#include <vector>
+
+namespace tri {
+
+enum class DistanceKernel {
+  BruteForce,       // 15 checks + intersection test, vectorised across triangle pairs
+  Penalty,          // penalty alone, unchecked
+  Hybrid,           // penalty; each uncertified pair recomputed by brute force
+  BatchedHybrid,    // penalty; a batch with one uncertified pair recomputed by brute force
+  BruteForceScalar, // brute force one pair at a time (the reference; for benchmarks)
+};
+
+enum class ContactParallelism {
+  None,          // the calling thread does everything
+  TrianglePairs, // OpenMP threads share the triangle pairs (the paper's triangle decomposition)
+  Batches,       // OpenMP loop over batches of batch_size pairs (the paper's Algorithm 1)
+};
+
+struct ContactOptions {
+  DistanceKernel kernel = DistanceKernel::Hybrid;
+  ContactParallelism parallel = ContactParallelism::None;
+  int batch_size = 8; // pairs per batch: BatchedHybrid's fallback unit, Batches' work unit
+  bool cull = true;
+  int newton_iterations = 6;      // penalty steps; one of penalty_iterations_supported()
+  double tolerance_ratio = 1e-4;  // hybrid distance tolerance / min(eps_a, eps_b)
+  PenaltyParameters penalty;      // scale-free penalty weight and regularisation
+};
+
+struct TriangleContact {            // one triangle pair closer than eps_a + eps_b
+  int tri_a, tri_b;                 // triangle indices in a and b
+  double distance;                  // >= 0; 0 when the triangles intersect
+  Eigen::Vector3d point_a, point_b; // closest points on triangle a and b (equal when
+                                    // intersecting: a point of both)
+  Eigen::Vector3d normal;           // unit, from a towards b; when intersecting the
+                                    // minimum-overlap axis (triangle_intersection.h)
+  bool intersecting;
+  double penetration_depth;         // intersecting only: translation of b along normal that
+                                    // separates the triangles; 0 otherwise
+};
+
+struct ContactStats { // values for one or more calls, summed by the caller; no globals
+  long long triangle_pairs_tested = 0; // pairs given to the distance kernel
+  long long triangle_pairs_culled = 0; // pairs removed by the box cull
+  long long contacts = 0;              // pairs reported
+  long long penalty_pairs = 0;         // pairs run through the penalty iteration
+  long long fallbacks = 0;             // pairs recomputed by brute force (hybrid kernels)
+  // newton_histogram[k], k = 1..kMaxPenaltyIterations: penalty pairs whose k-th Newton step
+  // was the first shorter than the tolerance (s |dz|, length); [0]: none was, within
+  // newton_iterations. The paper's Fig. 2 (left) when newton_iterations is large.
+  long long newton_histogram[kMaxPenaltyIterations + 1] = {};
+
+  ContactStats &operator+=(const ContactStats &o);
+};
+
+// Appends to `out` every triangle pair of a and b with distance < eps_a + eps_b, sorted by
+// (tri_a, tri_b) so results do not depend on thread count; adds to `stats`.
+// Throws std::invalid_argument for an unsupported newton_iterations or batch_size < 1.
+void find_triangle_contacts(const TriangleSoA &a, double eps_a, const TriangleSoA &b, double eps_b,
+                            const ContactOptions &opt, std::vector<TriangleContact> &out,
+                            ContactStats &stats);
+
+} // namespace tri
