@@ -1,0 +1,125 @@
+// Kernels on pair lists (distance_kernels.h): hybrid and batched hybrid equal brute force
+// within the tolerance on every pair of every set, at every scale; results do not depend on
+// how a list is split.
+#include "distance_kernels.h"
+#include "test_triangle_cases.h"
+
+#include <gtest/gtest.h>
+
+using namespace tri;
+using namespace tri_test;
+
+namespace {
+
+struct PairSet {
+  TriangleSoA a, b;
+  std::vector<TrianglePairIndex> pairs;
+  std::vector<std::string> names;
+};
+
+PairSet make_set(double scale, std::uint64_t seed) {
+  std::vector<TriangleCase> cases = adversarial_cases(scale, seed);
+  std::mt19937_64 rng(seed);
+  for (int k = 0; k < 3000; ++k) { // random pairs within a few triangle sizes
+    TriangleCase c;
+    c.name = "random " + std::to_string(k);
+    const V offset = V(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)) *
+                     uniform(rng, 0, 2);
+    for (int v = 0; v < 3; ++v) {
+      c.a[v] = scale * V(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1));
+      c.b[v] = scale * (V(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)) + offset);
+    }
+    cases.push_back(c);
+  }
+  PairSet s;
+  cases_to_soa(cases, s.a, s.b, s.pairs);
+  for (const auto &c : cases)
+    s.names.push_back(c.name);
+  return s;
+}
+
+} // namespace
+
+class HybridAtScale : public ::testing::TestWithParam<double> {};
+
+TEST_P(HybridAtScale, EqualsBruteForceWithinToleranceOnEveryPair) {
+  const double scale = GetParam();
+  const PairSet s = make_set(scale, 41);
+  const int n = static_cast<int>(s.pairs.size());
+  std::vector<TrianglePairDistance> bf(n), hy(n), bh(n);
+  brute_force_distances(s.a, s.b, s.pairs.data(), n, bf.data());
+  HybridSettings hs;
+  hs.tolerance = 1e-7 * scale; // 1e-3 of a soft layer of 1e-4 of the triangle size
+  HybridCounters counters;
+  hybrid_distances(s.a, s.b, s.pairs.data(), n, hs, 0, hy.data(), counters);
+  hybrid_distances(s.a, s.b, s.pairs.data(), n, hs, 8, bh.data(), counters);
+  for (int k = 0; k < n; ++k) {
+    ASSERT_NEAR(hy[k].distance, bf[k].distance, hs.tolerance) << s.names[k];
+    ASSERT_NEAR(bh[k].distance, bf[k].distance, hs.tolerance) << s.names[k];
+    ASSERT_EQ(hy[k].intersecting, bf[k].intersecting) << s.names[k];
+    ASSERT_EQ(bh[k].intersecting, bf[k].intersecting) << s.names[k];
+    ASSERT_NEAR(hy[k].normal.norm(), 1.0, 1e-12) << s.names[k];
+  }
+  EXPECT_EQ(counters.penalty_pairs, 2 * n);
+  EXPECT_GT(counters.fallbacks, 0); // the sets contain intersecting pairs
+}
+
+INSTANTIATE_TEST_SUITE_P(Scales, HybridAtScale, ::testing::Values(1e-6, 1e-3, 1.0, 1e3));
+
+TEST(Hybrid, ContactClassificationAgreesWithBruteForceAtTheCutoff) {
+  // Cutoffs at 0.99 and 1.01 of each pair's own distance: the side must match exactly.
+  const PairSet s = make_set(1e-3, 42);
+  const int n = static_cast<int>(s.pairs.size());
+  std::vector<TrianglePairDistance> bf(n), hy(n);
+  brute_force_distances(s.a, s.b, s.pairs.data(), n, bf.data());
+  for (double factor : {0.99, 1.01}) {
+    for (int k = 0; k < n; ++k) {
+      if (bf[k].distance == 0.0)
+        continue;
+      HybridSettings hs;
+      hs.tolerance = 1e-10;
+      hs.cutoff = factor * bf[k].distance;
+      HybridCounters counters;
+      hybrid_distances(s.a, s.b, &s.pairs[k], 1, hs, 0, &hy[k], counters);
+      ASSERT_EQ(hy[k].distance < hs.cutoff, bf[k].distance < hs.cutoff) << s.names[k];
+    }
+  }
+}
+
+TEST(Hybrid, ResultsDoNotDependOnHowTheListIsSplit) {
+  const PairSet s = make_set(1e-3, 43);
+  const int n = static_cast<int>(s.pairs.size());
+  HybridSettings hs;
+  hs.tolerance = 1e-10;
+  for (int batch : {0, 8}) {
+    std::vector<TrianglePairDistance> whole(n), parts(n);
+    HybridCounters c;
+    hybrid_distances(s.a, s.b, s.pairs.data(), n, hs, batch, whole.data(), c);
+    const int cut = batch ? 8 * 37 : 37; // split points at batch boundaries for batched
+    hybrid_distances(s.a, s.b, s.pairs.data(), cut, hs, batch, parts.data(), c);
+    hybrid_distances(s.a, s.b, s.pairs.data() + cut, n - cut, hs, batch, parts.data() + cut, c);
+    for (int k = 0; k < n; ++k) {
+      ASSERT_EQ(whole[k].distance, parts[k].distance) << s.names[k];
+      ASSERT_EQ(whole[k].point_a, parts[k].point_a) << s.names[k];
+      ASSERT_EQ(whole[k].normal, parts[k].normal) << s.names[k];
+    }
+  }
+}
+
+TEST(Penalty, AloneIsCloseButUnchecked) {
+  const PairSet s = make_set(1.0, 44);
+  const int n = static_cast<int>(s.pairs.size());
+  std::vector<TrianglePairDistance> bf(n), pe(n);
+  brute_force_distances(s.a, s.b, s.pairs.data(), n, bf.data());
+  HybridSettings hs;
+  hs.newton_iterations = 32;
+  HybridCounters c;
+  penalty_distances(s.a, s.b, s.pairs.data(), n, hs, pe.data(), c);
+  int close = 0;
+  for (int k = 0; k < n; ++k) {
+    EXPECT_GE(pe[k].distance, bf[k].distance - 1e-12); // an upper bound, always
+    EXPECT_TRUE(pe[k].normal.allFinite());
+    close += std::abs(pe[k].distance - bf[k].distance) < 1e-6;
+  }
+  EXPECT_GT(close, 0.9 * n);
+}

@@ -1,0 +1,114 @@
+// Penalty distance (penalty_distance.h): its geometric bounds always bracket the brute-force
+// distance, converged results agree with brute force, and the iteration is scale-free.
+#include "penalty_distance.h"
+#include "test_triangle_cases.h"
+#include "triangle_distance.h"
+
+#include <gtest/gtest.h>
+
+using namespace tri;
+using namespace tri_test;
+
+namespace {
+
+std::vector<TriangleCase> random_cases(int n, double scale, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::vector<TriangleCase> cases;
+  for (int k = 0; k < n; ++k) {
+    TriangleCase c;
+    c.name = "random " + std::to_string(k);
+    const V offset = V(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)) *
+                     uniform(rng, 0, 2);
+    for (int v = 0; v < 3; ++v) {
+      c.a[v] = scale * V(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1));
+      c.b[v] = scale * (V(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)) + offset);
+    }
+    cases.push_back(c);
+  }
+  return cases;
+}
+
+// Runs the penalty on all cases, block by block.
+std::vector<std::pair<double, double>> penalty_bounds(const std::vector<TriangleCase> &cases,
+                                                      int iterations,
+                                                      std::vector<int> *converged_at = nullptr) {
+  std::vector<std::pair<double, double>> bounds;
+  for (std::size_t first = 0; first < cases.size(); first += kPairLanes) {
+    TrianglePairBlock block;
+    const int n = static_cast<int>(std::min<std::size_t>(kPairLanes, cases.size() - first));
+    for (int l = 0; l < kPairLanes; ++l)
+      block.set_lane(l, cases[first + std::min(l, n - 1)].a, cases[first + std::min(l, n - 1)].b);
+    PenaltyBlockResult r;
+    penalty_block(iterations, block, PenaltyParameters{}, 1e-9 * cases[first].a[0].norm(), r);
+    for (int l = 0; l < n; ++l) {
+      bounds.push_back({r.lower[l], r.upper[l]});
+      if (converged_at)
+        converged_at->push_back(r.converged_at[l]);
+    }
+  }
+  return bounds;
+}
+
+} // namespace
+
+TEST(PenaltyDistance, BoundsBracketBruteForceOnEverySet) {
+  for (double scale : {1e-6, 1e-3, 1.0, 1e3}) {
+    std::vector<TriangleCase> cases = adversarial_cases(scale, 31);
+    for (const auto &c : random_cases(4000, scale, 32))
+      cases.push_back(c);
+    for (int iterations : {1, 4, 6, 32}) {
+      const auto bounds = penalty_bounds(cases, iterations);
+      for (std::size_t k = 0; k < cases.size(); ++k) {
+        const double d = triangle_distance(cases[k].a, cases[k].b).distance;
+        const double slack = 1e-12 * scale;
+        ASSERT_LE(bounds[k].first, d + slack) << cases[k].name << " iterations " << iterations;
+        ASSERT_GE(bounds[k].second, d - slack) << cases[k].name << " iterations " << iterations;
+      }
+    }
+  }
+}
+
+TEST(PenaltyDistance, ConvergedResultsMatchBruteForce) {
+  const double scale = 1e-3, tol = 1e-8; // 1e-5 of the triangle size
+  std::vector<TriangleCase> cases = adversarial_cases(scale, 33);
+  for (const auto &c : random_cases(20000, scale, 34))
+    cases.push_back(c);
+  const auto bounds = penalty_bounds(cases, 32);
+  int separated = 0, converged = 0;
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    const double d = triangle_distance(cases[k].a, cases[k].b).distance;
+    separated += d > 0;
+    const auto [lower, upper] = bounds[k];
+    if (lower > 0 && upper - lower <= tol) {
+      ++converged;
+      EXPECT_NEAR(upper, d, tol + 1e-15) << cases[k].name;
+    }
+  }
+  // The penalty alone certifies the large majority of separated pairs.
+  EXPECT_GT(converged, 0.9 * separated);
+}
+
+TEST(PenaltyDistance, IterationIsScaleFree) {
+  const auto small = random_cases(2000, 1e-6, 35), large = random_cases(2000, 1e3, 35);
+  std::vector<int> conv_small, conv_large;
+  const auto bs = penalty_bounds(small, 6, &conv_small), bl = penalty_bounds(large, 6, &conv_large);
+  int same_histogram_bin = 0;
+  for (std::size_t k = 0; k < small.size(); ++k) {
+    // Separated pairs: the same relative result. (Intersecting pairs have a segment of
+    // minimisers; there only the rounding-level residual differs.)
+    if (bl[k].first > 1e-6 * 1e3) {
+      EXPECT_NEAR(bs[k].second / 1e-6, bl[k].second / 1e3, 1e-9 * (1 + bl[k].second / 1e3));
+    }
+    same_histogram_bin += conv_small[k] == conv_large[k];
+  }
+  // Steps that land within rounding of the step tolerance may switch bins.
+  EXPECT_GT(same_histogram_bin, 0.95 * small.size());
+}
+
+TEST(PenaltyDistance, UnsupportedIterationCountThrows) {
+  TrianglePairBlock block{};
+  PenaltyBlockResult r;
+  EXPECT_FALSE(penalty_iterations_supported(9));
+  EXPECT_TRUE(penalty_iterations_supported(4));
+  EXPECT_THROW(penalty_block(9, block, PenaltyParameters{}, 0.0, r), std::invalid_argument);
+}
