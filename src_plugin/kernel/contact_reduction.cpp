@@ -143,30 +143,40 @@ bool absorbed_by(const std::vector<Raw> &raw, const std::vector<int> &members,
   return true;
 }
 
+// Members whose overlap is within this fraction of the layer of the deepest one define the
+// normal: ties up to rounding (see the header, step 4).
+constexpr double kNormalDepthBand = 1e-6;
+
 ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &members,
-                        const std::vector<int> &cls, int c, int seed, const Vector3d &ref) {
+                        const std::vector<int> &cls, const std::vector<int> &absorbed, int c,
+                        int seed, double layer, const Vector3d &ref) {
   ContactPoint p;
+  const Raw &s = raw[seed];
   Vector3d sum_p = Vector3d::Zero(), sum_n = Vector3d::Zero();
-  double sum_w = 0.0;
+  double sum_w = 0.0, sum_wn = 0.0;
   p.min_distance = std::numeric_limits<double>::infinity();
   for (int i : members) {
     if (cls[i] != c)
       continue;
     const Raw &r = raw[i];
-    sum_p += r.overlap * r.point;
-    sum_n += r.overlap * r.normal;
-    sum_w += r.overlap;
     p.min_distance = std::min(p.min_distance, r.distance);
     p.intersecting = p.intersecting || r.intersecting;
     ++p.num_merged;
+    if (absorbed[i])
+      continue; // rim contacts count, but neither place nor orient the contact
+    sum_p += r.overlap * r.point;
+    sum_w += r.overlap;
+    if (r.overlap >= s.overlap - kNormalDepthBand * layer) {
+      sum_n += r.overlap * r.normal;
+      sum_wn += r.overlap;
+    }
   }
-  const Raw &s = raw[seed];
   p.point = sum_p / sum_w;
   p.overlap = s.overlap;
   p.tri_a = s.tri_a;
   p.tri_b = s.tri_b;
   const double len = sum_n.norm();
-  if (std::isfinite(len) && len > 1e-3 * sum_w)
+  if (std::isfinite(len) && len > 1e-3 * sum_wn)
     p.normal = sum_n / len;
   else
     p.normal = finite(s.normal) ? s.normal : ref;
@@ -192,6 +202,8 @@ void reduce_clusters(std::vector<Raw> &raw, double layer, const ReductionParams 
   const double cos_split = std::cos(params.split_angle);
   std::vector<int> &cls = work.cls;
   cls.assign(n, -1);
+  std::vector<int> &absorbed = work.absorbed;
+  absorbed.assign(n, 0);
   std::vector<Class> classes;
   std::vector<int> group;
   for (int begin = 0; begin < n;) {
@@ -227,15 +239,17 @@ void reduce_clusters(std::vector<Raw> &raw, double layer, const ReductionParams 
             !absorbed_by(raw, group, cls, s, mseed, layer))
           continue;
         for (int i : group)
-          if (cls[i] == s)
+          if (cls[i] == s) {
             cls[i] = m;
+            absorbed[i] = 1;
+          }
         classes[s].alive = false;
         break;
       }
     }
     for (int c = first_class; c < static_cast<int>(classes.size()); ++c)
       if (classes[c].alive)
-        out.push_back(make_point(raw, group, cls, c, classes[c].seed, ref));
+        out.push_back(make_point(raw, group, cls, absorbed, c, classes[c].seed, layer, ref));
     begin = end;
   }
   // Deepest first; ties keep component/class order (deterministic).
@@ -276,7 +290,10 @@ void reduce_contacts(const TriangleContact *contacts, int n, double eps_a, doubl
   for (int k = 0; k < n; ++k) {
     const TriangleContact &c = contacts[k];
     const double distance = c.intersecting ? 0.0 : std::max(0.0, c.distance);
-    const double overlap = layer - distance;
+    const double depth = c.intersecting && std::isfinite(c.penetration_depth)
+                             ? std::max(0.0, c.penetration_depth)
+                             : 0.0;
+    const double overlap = layer - distance + depth;
     if (!(overlap > 0.0))
       continue;
     Raw r;

@@ -1,0 +1,447 @@
+// Tests of contact_reduction.h: the summed force of a flat face on a plane must not depend on
+// the mesh, separate regions must stay separate, the output must not depend on input order,
+// and intersecting triangles must give finite normals. Triangle-pair contacts are built by a
+// small brute force written here (point-triangle and segment-segment closest points), so the
+// test does not depend on the distance kernel under test elsewhere.
+#include "contact_force.h"
+#include "contact_reduction.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <random>
+#include <vector>
+
+namespace {
+
+using Eigen::Matrix3d;
+using Eigen::Vector3d;
+using tri::ContactPoint;
+using tri::TriangleContact;
+
+struct Tri {
+  Vector3d v[3];
+};
+using Mesh = std::vector<Tri>;
+
+// ---- brute-force triangle distance (separated triangles only; enough for these scenes) ----
+
+// Closest point on triangle abc to p (Ericson, Real-Time Collision Detection, 5.1.5).
+Vector3d closest_on_triangle(const Vector3d &p, const Vector3d &a, const Vector3d &b,
+                             const Vector3d &c) {
+  const Vector3d ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0 && d2 <= 0)
+    return a;
+  const Vector3d bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0 && d4 <= d3)
+    return b;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0)
+    return a + d1 / (d1 - d3) * ab;
+  const Vector3d cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0 && d5 <= d6)
+    return c;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0)
+    return a + d2 / (d2 - d6) * ac;
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+    return b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b);
+  const double denom = 1.0 / (va + vb + vc);
+  return a + ab * (vb * denom) + ac * (vc * denom);
+}
+
+// Closest points of segments p1q1 and p2q2 (Ericson 5.1.9).
+void closest_segments(const Vector3d &p1, const Vector3d &q1, const Vector3d &p2,
+                      const Vector3d &q2, Vector3d &c1, Vector3d &c2) {
+  const Vector3d d1 = q1 - p1, d2 = q2 - p2, r = p1 - p2;
+  const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
+  double s, t;
+  const double c = d1.dot(r), b = d1.dot(d2), denom = a * e - b * b;
+  s = denom > 1e-30 * a * e ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
+  t = (b * s + f) / e;
+  if (t < 0) {
+    t = 0;
+    s = std::clamp(-c / a, 0.0, 1.0);
+  } else if (t > 1) {
+    t = 1;
+    s = std::clamp((b - c) / a, 0.0, 1.0);
+  }
+  c1 = p1 + s * d1;
+  c2 = p2 + t * d2;
+}
+
+struct Closest {
+  double d = std::numeric_limits<double>::infinity();
+  Vector3d pa, pb;
+  void offer(const Vector3d &a, const Vector3d &b) {
+    const double dd = (b - a).norm();
+    if (dd < d) {
+      d = dd;
+      pa = a;
+      pb = b;
+    }
+  }
+};
+
+Closest triangle_distance(const Tri &a, const Tri &b) {
+  Closest c;
+  for (int i = 0; i < 3; ++i) {
+    c.offer(a.v[i], closest_on_triangle(a.v[i], b.v[0], b.v[1], b.v[2]));
+    c.offer(closest_on_triangle(b.v[i], a.v[0], a.v[1], a.v[2]), b.v[i]);
+  }
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      Vector3d ca, cb;
+      closest_segments(a.v[i], a.v[(i + 1) % 3], b.v[j], b.v[(j + 1) % 3], ca, cb);
+      c.offer(ca, cb);
+    }
+  return c;
+}
+
+// All triangle pairs closer than `layer`, as the distance kernel would report them.
+std::vector<TriangleContact> brute_contacts(const Mesh &a, const Mesh &b, double layer) {
+  std::vector<TriangleContact> out;
+  for (int i = 0; i < static_cast<int>(a.size()); ++i) {
+    Vector3d alo = a[i].v[0].cwiseMin(a[i].v[1]).cwiseMin(a[i].v[2]);
+    Vector3d ahi = a[i].v[0].cwiseMax(a[i].v[1]).cwiseMax(a[i].v[2]);
+    for (int j = 0; j < static_cast<int>(b.size()); ++j) {
+      const Vector3d blo = b[j].v[0].cwiseMin(b[j].v[1]).cwiseMin(b[j].v[2]);
+      const Vector3d bhi = b[j].v[0].cwiseMax(b[j].v[1]).cwiseMax(b[j].v[2]);
+      if (((blo - ahi).array() > layer).any() || ((alo - bhi).array() > layer).any())
+        continue;
+      const Closest c = triangle_distance(a[i], b[j]);
+      if (c.d >= layer)
+        continue;
+      EXPECT_GT(c.d, 0.0) << "scene triangles must not intersect";
+      out.push_back({i, j, c.d, c.pa, c.pb, (c.pb - c.pa) / c.d, false, 0.0});
+    }
+  }
+  return out;
+}
+
+// ---- scenes ----
+
+// Axis-aligned unit square grid of k x k cells (2 triangles each) mapped by origin + u*s + v*t.
+void add_grid(Mesh &m, const Vector3d &origin, const Vector3d &s, const Vector3d &t, int k) {
+  for (int i = 0; i < k; ++i)
+    for (int j = 0; j < k; ++j) {
+      const Vector3d p00 = origin + s * (double(i) / k) + t * (double(j) / k);
+      const Vector3d p10 = origin + s * (double(i + 1) / k) + t * (double(j) / k);
+      const Vector3d p01 = origin + s * (double(i) / k) + t * (double(j + 1) / k);
+      const Vector3d p11 = origin + s * (double(i + 1) / k) + t * (double(j + 1) / k);
+      m.push_back({{p00, p10, p11}});
+      m.push_back({{p00, p11, p01}});
+    }
+}
+
+// Cube of side `side`, 2 k^2 triangles per face, rotated by R about its centre.
+Mesh cube(double side, int k, const Vector3d &centre, const Matrix3d &R = Matrix3d::Identity()) {
+  Mesh m;
+  const double h = 0.5 * side;
+  for (int axis = 0; axis < 3; ++axis)
+    for (int sign = -1; sign <= 1; sign += 2) {
+      Vector3d o = Vector3d::Constant(-h);
+      o[axis] = sign * h;
+      Vector3d s = Vector3d::Zero(), t = Vector3d::Zero();
+      s[(axis + 1) % 3] = side;
+      t[(axis + 2) % 3] = side;
+      add_grid(m, o, s, t, k);
+    }
+  for (Tri &t : m)
+    for (Vector3d &v : t.v)
+      v = centre + R * v;
+  return m;
+}
+
+// Square plane z = 0, [-half, half]^2, k x k cells.
+Mesh plane(double half, int k) {
+  Mesh m;
+  add_grid(m, Vector3d(-half, -half, 0), Vector3d(2 * half, 0, 0), Vector3d(0, 2 * half, 0), k);
+  return m;
+}
+
+const double kSide = 0.004; // m, the design's rock size
+const double kEps = 1e-4;   // m, soft layer of each body
+const double kLayer = 2 * kEps;
+const double kKn = 2000.0;  // N/m
+
+// cell_a, cell_b: grid cell sides; a grid triangle's longest edge is the cell's diagonal and
+// its shortest the cell's side (the paper's minimum mesh width).
+tri::ReductionParams params_for(double cell_a, double cell_b) {
+  tri::ReductionParams p;
+  p.link_length =
+      tri::recommended_link_length(std::sqrt(2.0) * cell_a, std::sqrt(2.0) * cell_b, kEps, kEps);
+  p.min_width = std::min(cell_a, cell_b);
+  p.reference_direction = -Vector3d::UnitZ(); // cube (a) above plane (b)
+  return p;
+}
+
+// Static normal force on the cube (a), N.
+Vector3d force_on_cube(const std::vector<ContactPoint> &points, const Vector3d &centre) {
+  tri::BodyState a, b;
+  a.x = centre;
+  a.mass = 1e-3;
+  tri::ContactCoefficients c;
+  c.kn = kKn;
+  c.tangential = tri::TangentialModel::no_history;
+  return tri::pair_contact_force(points, a, b, c, 1e-6, nullptr).force_a;
+}
+
+struct Case {
+  int k;          // cube cells per face edge: 2 k^2 triangles per face
+  int plane_k;    // plane cells per edge
+  double overlap; // gap = kLayer - overlap at the lowest point
+};
+
+struct Outcome {
+  int raw, paper, clusters;
+  Vector3d force, point;
+};
+
+Outcome run_case(const Case &cs, const Matrix3d &R = Matrix3d::Identity()) {
+  const double half_plane = 0.75 * kSide;
+  const Mesh b = plane(half_plane, cs.plane_k);
+  // Place the cube so that its lowest vertex is at height kLayer - overlap.
+  Mesh a = cube(kSide, cs.k, Vector3d::Zero(), R);
+  double low = std::numeric_limits<double>::infinity();
+  for (const Tri &t : a)
+    for (const Vector3d &v : t.v)
+      low = std::min(low, v.z());
+  const Vector3d centre(0, 0, kLayer - cs.overlap - low);
+  for (Tri &t : a)
+    for (Vector3d &v : t.v)
+      v += centre;
+  const std::vector<TriangleContact> raw = brute_contacts(a, b, kLayer);
+  const tri::ReductionParams p = params_for(kSide / cs.k, 2 * half_plane / cs.plane_k);
+  tri::ReductionParams paper = p;
+  paper.method = tri::ReductionMethod::paper_min_width;
+  const auto points = tri::reduce_contacts(raw, kEps, kEps, p);
+  Outcome o;
+  o.raw = static_cast<int>(raw.size());
+  o.paper = static_cast<int>(tri::reduce_contacts(raw, kEps, kEps, paper).size());
+  o.clusters = static_cast<int>(points.size());
+  o.force = force_on_cube(points, centre);
+  o.point = points.empty() ? Vector3d::Zero() : Vector3d(points[0].point - centre);
+  return o;
+}
+
+Matrix3d small_tilt() {
+  return (Eigen::AngleAxisd(0.01, Vector3d::UnitX()) * Eigen::AngleAxisd(0.006, Vector3d::UnitY()))
+      .toRotationMatrix();
+}
+
+// A cube meshed with 12, 48, 192, 768 triangles on a plane meshed coarse (2 triangles),
+// matched and fine (cells of eps: many plane triangles lie just outside the footprint and see
+// the cube's bottom edges at a slant): the total force is kn * overlap whatever the meshes.
+TEST(ContactReduction, FlatFaceForceIndependentOfMeshResolution) {
+  for (const double overlap : {0.1 * kLayer, 0.45 * kLayer, 0.8 * kLayer})
+    for (const bool tilted : {false, true})
+      for (const int plane_k : {1, 8, 60})
+        for (const int k : {1, 2, 4, 8}) {
+          const Outcome o = run_case({k, plane_k, overlap}, tilted ? small_tilt() : Matrix3d::Identity());
+          const double expected = kKn * overlap;
+          std::printf("overlap/layer %.2f tilt %d plane %2d tri/face %3d: raw %5d paper %4d "
+                      "clusters %d  Fz/(kn overlap) %.6f  point-centre (%.2e, %.2e)\n",
+                      overlap / kLayer, tilted, plane_k, 2 * k * k, o.raw, o.paper, o.clusters,
+                      o.force.z() / expected, o.point.x(), o.point.y());
+          EXPECT_EQ(o.clusters, 1) << "k " << k << " plane " << plane_k;
+          EXPECT_NEAR(o.force.z(), expected, 0.01 * expected) << "k " << k << " plane " << plane_k;
+          EXPECT_NEAR(o.force.head<2>().norm(), 0.0, 0.01 * expected);
+        }
+}
+
+// The weight that the cube carries at equilibrium fixes its overlap: the same at every mesh.
+TEST(ContactReduction, EquilibriumOverlapIndependentOfMeshResolution) {
+  const double weight = kKn * 0.6 * kLayer; // N
+  std::vector<double> overlaps;
+  for (const int k : {1, 2, 4, 8}) {
+    double lo = 0.0, hi = kLayer;
+    for (int it = 0; it < 16; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      (run_case({k, 60, mid}).force.z() < weight ? lo : hi) = mid;
+    }
+    overlaps.push_back(0.5 * (lo + hi));
+    std::printf("tri/face %3d: equilibrium overlap / layer %.6f\n", 2 * k * k,
+                overlaps.back() / kLayer);
+  }
+  for (double o : overlaps)
+    EXPECT_NEAR(o, overlaps[0], 0.01 * overlaps[0]);
+}
+
+// The paper's baseline keeps more points as the mesh is refined: why it is not enough.
+TEST(ContactReduction, PaperBaselineCountGrowsWithResolution) {
+  const Outcome coarse = run_case({1, 1, 0.45 * kLayer});
+  const Outcome fine = run_case({8, 1, 0.45 * kLayer});
+  EXPECT_GE(fine.paper, 4 * coarse.paper);
+  EXPECT_EQ(fine.clusters, 1);
+}
+
+// A non-convex particle (two cubes joined as one mesh) touching the plane in two places.
+TEST(ContactReduction, TwoSeparateRegionsStayTwoContacts) {
+  const double gap = kLayer - 0.5 * kLayer;
+  const double z = 0.5 * kSide + gap;
+  Mesh a = cube(kSide, 4, Vector3d(-kSide, 0, z));
+  const Mesh right = cube(kSide, 4, Vector3d(kSide, 0, z));
+  a.insert(a.end(), right.begin(), right.end());
+  const Mesh b = plane(2 * kSide, 16); // cells of kSide / 4, like the cubes'
+  const auto raw = brute_contacts(a, b, kLayer);
+  const auto points = tri::reduce_contacts(raw, kEps, kEps, params_for(kSide / 4, kSide / 4));
+  ASSERT_EQ(points.size(), 2u);
+  std::vector<double> xs = {points[0].point.x(), points[1].point.x()};
+  std::sort(xs.begin(), xs.end());
+  EXPECT_NEAR(xs[0], -kSide, 0.25 * kSide);
+  EXPECT_NEAR(xs[1], kSide, 0.25 * kSide);
+  for (const ContactPoint &p : points) {
+    EXPECT_NEAR(p.overlap, kLayer - gap, 1e-12);
+    EXPECT_NEAR(p.normal.z(), -1.0, 1e-9);
+  }
+}
+
+// A cube wedged in a corner: on the floor and against a wall, the two patches meeting at the
+// cube's edge. Two contacts, one per face, with their own normals and overlaps.
+TEST(ContactReduction, WedgedInCornerKeepsOneContactPerFace) {
+  const double gap_floor = 0.4 * kLayer, gap_wall = 0.7 * kLayer;
+  const Vector3d centre(-0.5 * kSide - gap_wall, 0, 0.5 * kSide + gap_floor);
+  const Mesh a = cube(kSide, 4, centre);
+  Mesh b;
+  add_grid(b, Vector3d(-2 * kSide, -kSide, 0), Vector3d(2 * kSide, 0, 0), Vector3d(0, 2 * kSide, 0), 16);
+  add_grid(b, Vector3d(0, -kSide, 0), Vector3d(0, 2 * kSide, 0), Vector3d(0, 0, 2 * kSide), 16);
+  const auto raw = brute_contacts(a, b, kLayer);
+  tri::ReductionParams p = params_for(kSide / 4, kSide / 8);
+  p.reference_direction = Vector3d(1, 0, -1).normalized();
+  const auto points = tri::reduce_contacts(raw, kEps, kEps, p);
+  ASSERT_EQ(points.size(), 2u);
+  EXPECT_NEAR(points[0].overlap, kLayer - gap_floor, 1e-12);
+  EXPECT_GT(points[0].normal.dot(-Vector3d::UnitZ()), 0.999);
+  EXPECT_NEAR(points[1].overlap, kLayer - gap_wall, 1e-12);
+  EXPECT_GT(points[1].normal.dot(Vector3d::UnitX()), 0.999);
+}
+
+// Any permutation of the triangle-pair contacts gives a bit-identical result.
+TEST(ContactReduction, PermutationOfInputGivesIdenticalOutput) {
+  const double gap = 0.3 * kLayer;
+  const Mesh a = cube(kSide, 4, Vector3d(0.0001, -0.0002, 0.5 * kSide + gap), small_tilt());
+  const Mesh b = plane(0.75 * kSide, 60);
+  std::vector<TriangleContact> raw = brute_contacts(a, b, kLayer);
+  ASSERT_GT(raw.size(), 100u);
+  const tri::ReductionParams p = params_for(kSide / 4, 1.5 * kSide / 60);
+  const auto ref = tri::reduce_contacts(raw, kEps, kEps, p);
+  std::mt19937 rng(12345);
+  for (int trial = 0; trial < 5; ++trial) {
+    std::shuffle(raw.begin(), raw.end(), rng);
+    const auto out = tri::reduce_contacts(raw, kEps, kEps, p);
+    ASSERT_EQ(out.size(), ref.size());
+    for (std::size_t i = 0; i < out.size(); ++i) {
+      for (int k = 0; k < 3; ++k) {
+        EXPECT_EQ(out[i].point[k], ref[i].point[k]);
+        EXPECT_EQ(out[i].normal[k], ref[i].normal[k]);
+      }
+      EXPECT_EQ(out[i].overlap, ref[i].overlap);
+      EXPECT_EQ(out[i].num_merged, ref[i].num_merged);
+      EXPECT_EQ(out[i].tri_a, ref[i].tri_a);
+    }
+  }
+}
+
+TriangleContact hand_contact(int ta, int tb, const Vector3d &p, const Vector3d &n, double d,
+                             bool intersecting, double depth = 0.0) {
+  if (d == 0.0) // n may be NaN on purpose
+    return {ta, tb, d, p, p, n, intersecting, depth};
+  return {ta, tb, d, p - 0.5 * d * n, p + 0.5 * d * n, n, intersecting, depth};
+}
+
+// Intersecting triangles: a non-finite kernel normal falls back to the reference direction.
+TEST(ContactReduction, IntersectingContactWithoutNormalGetsReferenceDirection) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  tri::ReductionParams p = params_for(1e-3, 1e-3);
+  p.reference_direction = Vector3d(3, 0, 4); // not unit on purpose
+  const auto points = tri::reduce_contacts(
+      {hand_contact(0, 0, Vector3d(1e-3, 0, 0), Vector3d(nan, nan, nan), 0.0, true, 3e-5)}, kEps,
+      kEps, p);
+  ASSERT_EQ(points.size(), 1u);
+  EXPECT_TRUE(points[0].intersecting);
+  EXPECT_TRUE(points[0].normal.allFinite());
+  EXPECT_NEAR((points[0].normal - Vector3d(0.6, 0, 0.8)).norm(), 0.0, 1e-15);
+  EXPECT_DOUBLE_EQ(points[0].overlap, kLayer + 3e-5); // layer + penetration depth
+}
+
+// Two intersecting pairs at one spot with opposite normals (a deep, symmetric crossing): the
+// weighted mean cancels, yet the contact's normal is finite and unit.
+TEST(ContactReduction, OpposingIntersectingNormalsStayFinite) {
+  const Vector3d n(0, 0, 1);
+  const auto points = tri::reduce_contacts({hand_contact(0, 0, Vector3d::Zero(), n, 0.0, true),
+                                            hand_contact(1, 1, Vector3d(1e-5, 0, 0), -n, 0.0, true)},
+                                           kEps, kEps, params_for(1e-3, 1e-3));
+  ASSERT_FALSE(points.empty());
+  for (const ContactPoint &c : points) {
+    EXPECT_TRUE(c.normal.allFinite());
+    EXPECT_NEAR(c.normal.norm(), 1.0, 1e-12);
+  }
+}
+
+// A face sunk below the plane by d (a above b, true normal -z): the bottom-face pairs are
+// separated but see the plane from behind (normal +z, distance d); the side faces cross the
+// plane (depth d). One contact, normal -z, overlap layer + d: the force still pushes a out.
+TEST(ContactReduction, SunkFaceIsFlippedToPushOut) {
+  const double d = 0.5 * kEps;
+  std::vector<TriangleContact> raw;
+  for (int i = 0; i < 4; ++i)
+    raw.push_back(hand_contact(i, i, Vector3d(1e-4 * i, 0, 0), Vector3d::UnitZ(), d, false));
+  raw.push_back(hand_contact(10, 4, Vector3d(-1e-4, 0, 0), -Vector3d::UnitZ(), 0.0, true, d));
+  raw.push_back(hand_contact(11, 5, Vector3d(4e-4, 0, 0), -Vector3d::UnitZ(), 0.0, true, d));
+  const auto points = tri::reduce_contacts(raw, kEps, kEps, params_for(2e-4, 2e-4));
+  ASSERT_EQ(points.size(), 1u);
+  EXPECT_NEAR(points[0].normal.z(), -1.0, 1e-12);
+  EXPECT_NEAR(points[0].overlap, kLayer + d, 1e-15);
+  EXPECT_EQ(points[0].num_merged, 6);
+  EXPECT_TRUE(points[0].intersecting);
+}
+
+// A flat patch (a above b, normal -z, gap g) and one contact at its border where b's triangle
+// lies outside the footprint and sees a's edge at 56 degrees: absorbed into the patch, and it
+// neither moves nor tilts it. A contact of a perpendicular face next to it is not absorbed.
+TEST(ContactReduction, RimContactIsAbsorbedPerpendicularFaceIsNot) {
+  const double g = 0.2 * kLayer, h = 1.5 * g;
+  std::vector<TriangleContact> raw;
+  for (int i = 0; i < 3; ++i)
+    raw.push_back(hand_contact(i, i, Vector3d(-1e-4 * i, 0, 0.5 * g), -Vector3d::UnitZ(), g, false));
+  const Vector3d corner(0, 0, g), below(h, 0, 0);
+  raw.push_back({7, 7, (below - corner).norm(), corner, below, (below - corner).normalized(), false, 0.0});
+  auto points = tri::reduce_contacts(raw, kEps, kEps, params_for(1e-4, 1e-4));
+  ASSERT_EQ(points.size(), 1u);
+  EXPECT_EQ(points[0].num_merged, 4);
+  EXPECT_NEAR(points[0].normal.z(), -1.0, 1e-15);
+  EXPECT_NEAR(points[0].point.x(), -1e-4, 1e-15);
+  EXPECT_NEAR(points[0].overlap, kLayer - g, 1e-15);
+  // A wall face at x = 1.5 g, touched by a's side at distance 0.9 g: a contact of its own.
+  raw.push_back(hand_contact(8, 8, Vector3d(1.05 * g, 0, 0.5 * g), Vector3d::UnitX(), 0.9 * g, false));
+  points = tri::reduce_contacts(raw, kEps, kEps, params_for(1e-4, 1e-4));
+  ASSERT_EQ(points.size(), 2u);
+  EXPECT_NEAR(points[0].normal.x(), 1.0, 1e-15);
+  EXPECT_NEAR(points[1].normal.z(), -1.0, 1e-15);
+}
+
+// Raw contacts at or beyond the layer carry no force and are dropped; no contacts, no points.
+TEST(ContactReduction, ContactsOutsideTheLayerAreIgnored) {
+  EXPECT_TRUE(tri::reduce_contacts({}, kEps, kEps, params_for(1e-3, 1e-3)).empty());
+  const auto points = tri::reduce_contacts(
+      {hand_contact(0, 0, Vector3d::Zero(), Vector3d::UnitZ(), kLayer, false)}, kEps, kEps,
+      params_for(1e-3, 1e-3));
+  EXPECT_TRUE(points.empty());
+}
+
+TEST(ContactReduction, RecommendedLinkLengthUsesFinerMesh) {
+  EXPECT_NEAR(tri::recommended_link_length(1e-3, std::numeric_limits<double>::infinity(), 1e-4,
+                                           2e-4),
+              2e-3 + 3e-4, 1e-8 * 2.3e-3);
+  EXPECT_NEAR(tri::recommended_link_length(5e-3, 1e-3, 1e-4, 1e-4), 2.2e-3, 1e-8 * 2.2e-3);
+}
+
+} // namespace
