@@ -143,7 +143,10 @@ void check_stl_complete(const std::string &path, const std::string &bytes) {
                                 std::uint64_t(p[2]) << 16 | std::uint64_t(p[3]) << 24;
     if (bytes.size() == kHeader + kPerTriangle * count)
       return; // binary, complete
-    if (!starts_with_solid(bytes)) {
+    // Binary headers may start with "solid" too; binary data almost always holds zero bytes
+    // (attribute counts, zero normal components), ASCII text never does.
+    const bool has_zero_byte = bytes.find('\0', kHeader) != std::string::npos;
+    if (!starts_with_solid(bytes) || has_zero_byte) {
       std::ostringstream os;
       os << "binary STL is truncated or malformed: its header announces " << count << " triangles ("
          << kHeader + kPerTriangle * count << " bytes) but the file has " << bytes.size()

@@ -59,8 +59,9 @@ void check_degenerate(const TriangleMesh &mesh, double length_scale) {
     const Eigen::Vector3d &a = mesh.vertices[tr[0]];
     const double double_area = (mesh.vertices[tr[1]] - a).cross(mesh.vertices[tr[2]] - a).norm();
     if (!(double_area >= min_double_area))
-      fail("triangle ", t, " is degenerate: zero or near-zero area ", 0.5 * double_area, " (below ",
-           kDegenerateAreaTolerance, " x mesh size^2 / 2, mesh size ", length_scale, ")");
+      fail("triangle ", t, " is degenerate: zero or near-zero area ", 0.5 * double_area,
+           " (the limit is ", 0.5 * min_double_area, " = ", kDegenerateAreaTolerance,
+           " x size^2 / 2, size = bounding-box diagonal ", length_scale, ")");
   }
 }
 
@@ -152,8 +153,9 @@ void check_oriented_and_connected(const std::vector<std::vector<Neighbour>> &nei
       if (odd.size() > 8)
         list << ", ...";
       fail("mesh is inconsistently oriented: ", odd.size(),
-           odd.size() == 1 ? " triangle is" : " triangles are",
-           " flipped relative to their neighbours (triangle ", list.str(),
+           odd.size() == 1 ? " triangle is flipped relative to its neighbours (triangle "
+                           : " triangles are flipped relative to their neighbours (triangles ",
+           list.str(),
            "); neighbouring triangles must traverse their shared edge in opposite directions");
     }
   }
@@ -176,8 +178,8 @@ void check_outward(const TriangleMesh &mesh, double length_scale) {
     fail("mesh is inverted (inside out): signed volume ", volume,
          " is negative; triangles must be counter-clockwise seen from outside (flip them all)");
   if (!(volume > flat))
-    fail("mesh encloses zero or near-zero volume ", volume, " (below ", kFlatVolumeTolerance,
-         " x mesh size^3, mesh size ", length_scale, ")");
+    fail("mesh encloses zero or near-zero volume ", volume, " (the limit is ", flat, " = ",
+         kFlatVolumeTolerance, " x size^3, size = bounding-box diagonal ", length_scale, ")");
 }
 
 } // namespace

@@ -250,6 +250,13 @@ TEST_F(MeshReader, TruncatedBinaryStl) {
                                     "12 triangles (684 bytes) but the file has 664 bytes"));
 }
 
+TEST_F(MeshReader, TruncatedBinaryStlWhoseHeaderSaysSolid) {
+  const fs::path path = file("cut_solid.stl");
+  write_binary_stl(path, box(3, 1, 2, Eigen::Vector3d::Zero()), "solid but binary");
+  truncate_to(path, 84 + 50 * 12 - 20);
+  EXPECT_TRUE(StartsWithPathAndSays(read_error(path), path, "binary STL is truncated"));
+}
+
 TEST_F(MeshReader, TruncatedAsciiStl) {
   const fs::path path = file("cut_ascii.stl");
   write_ascii_stl(path, sphere(1, 1.0));

@@ -94,7 +94,8 @@ TEST(MeshValidation, OneFlippedTriangleIsNamed) {
   tri::TriangleMesh m = box();
   std::swap(m.triangles[9][1], m.triangles[9][2]);
   const std::string msg = problem(m);
-  EXPECT_TRUE(Contains(msg, "mesh is inconsistently oriented: 1 triangle is flipped"));
+  EXPECT_TRUE(Contains(
+      msg, "mesh is inconsistently oriented: 1 triangle is flipped relative to its neighbours"));
   EXPECT_TRUE(Contains(msg, "(triangle 9)"));
 }
 
