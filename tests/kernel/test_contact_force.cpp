@@ -1,0 +1,327 @@
+// Tests of contact_model.h, contact_history.h and contact_force.h: hand-computed LIGGGHTS
+// hooke/stiffness forces, the tangential history (stick, slip, projection), no_history
+// friction, torques with friction, Newton's third law and angular momentum balance, history
+// slot matching, and the returned statistics.
+#include "contact_force.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+namespace {
+
+using Eigen::Vector3d;
+using tri::BodyState;
+using tri::ContactCoefficients;
+using tri::ContactPoint;
+
+ContactCoefficients material() {
+  ContactCoefficients c;
+  c.kn = 2000.0;
+  c.kt = 1000.0;
+  c.gamman = 20.0;
+  c.gammat = 10.0;
+  c.mu = 0.5;
+  return c;
+}
+
+ContactPoint point(const Vector3d &p, const Vector3d &n, double overlap) {
+  ContactPoint c;
+  c.point = p;
+  c.normal = n.normalized();
+  c.overlap = overlap;
+  c.min_distance = 2e-4 - overlap;
+  c.num_merged = 3;
+  return c;
+}
+
+BodyState body(const Vector3d &x, const Vector3d &v, const Vector3d &w, double m) {
+  BodyState b;
+  b.x = x;
+  b.v = v;
+  b.omega = w;
+  b.mass = m;
+  return b;
+}
+
+// ---- normal sub-model ----
+
+TEST(NormalForce, SpringAndDampingByHand) {
+  ContactCoefficients c = material();
+  const double meff = tri::effective_mass(2.0, 3.0); // 1.2 kg
+  EXPECT_DOUBLE_EQ(meff, 1.2);
+  // Approaching at 0.1 m/s (v_n = -0.1): 2000 * 1e-4 + 20 * 1.2 * 0.1 = 0.2 + 2.4.
+  EXPECT_NEAR(tri::normal_force(c, 1e-4, -0.1, meff), 2.6, 1e-12);
+  c.gamman = 0.0;
+  EXPECT_NEAR(tri::normal_force(c, 1e-4, -0.1, meff), 0.2, 1e-15);
+}
+
+TEST(NormalForce, AbsoluteDampingIgnoresMass) {
+  ContactCoefficients c = material();
+  c.absolute_damping = true; // gamman in kg/s: 0.2 + 20 * 0.1
+  EXPECT_NEAR(tri::normal_force(c, 1e-4, -0.1, 1.2), 2.2, 1e-12);
+  EXPECT_NEAR(tri::normal_force(c, 1e-4, -0.1, 7.0), 2.2, 1e-12);
+}
+
+TEST(NormalForce, LimitForceClampsAttraction) {
+  ContactCoefficients c = material();
+  // Separating at 1 m/s: 0.2 - 20 * 1.2 * 1 = -23.8 (LIGGGHTS default: attraction allowed).
+  EXPECT_NEAR(tri::normal_force(c, 1e-4, 1.0, 1.2), -23.8, 1e-12);
+  c.limit_force = true;
+  EXPECT_EQ(tri::normal_force(c, 1e-4, 1.0, 1.2), 0.0);
+  EXPECT_NEAR(tri::normal_force(c, 1e-4, -0.1, 1.2), 2.6, 1e-12); // repulsion unchanged
+}
+
+TEST(NormalForce, WallEffectiveMassIsTheParticleMass) {
+  EXPECT_DOUBLE_EQ(tri::effective_mass(2.0, 0.0), 2.0);
+  EXPECT_DOUBLE_EQ(tri::effective_mass(2.0, std::numeric_limits<double>::infinity()), 2.0);
+  EXPECT_DOUBLE_EQ(tri::effective_mass(0.0, 3.0), 3.0);
+}
+
+TEST(Coefficients, ErrorsNameTheCoefficient) {
+  ContactCoefficients c = material();
+  EXPECT_EQ(tri::coefficient_error(c), "");
+  c.mu = -0.1;
+  EXPECT_NE(tri::coefficient_error(c).find("coefficientFriction"), std::string::npos);
+  c = material();
+  c.kn = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_NE(tri::coefficient_error(c).find("kn"), std::string::npos);
+}
+
+// ---- tangential sub-models ----
+
+TEST(TangentialHistory, StickIsSpringPlusDamping) {
+  const ContactCoefficients c = material();
+  const Vector3d n = Vector3d::UnitZ(), vt(0.01, 0, 0);
+  Vector3d shear = Vector3d::Zero();
+  const double dt = 1e-3, meff = 1.2, fn = 10.0; // cap mu fn = 5 N, not reached
+  const Vector3d ft = tri::tangential_force_history(c, n, vt, fn, meff, dt, shear);
+  EXPECT_NEAR(shear.x(), 1e-5, 1e-20);
+  // -kt shear - gammat meff vt = -0.01 - 10 * 1.2 * 0.01 = -0.13
+  EXPECT_NEAR(ft.x(), -0.13, 1e-14);
+  EXPECT_EQ(ft.y(), 0.0);
+  EXPECT_EQ(ft.z(), 0.0);
+  // Second step: the spring keeps growing.
+  const Vector3d ft2 = tri::tangential_force_history(c, n, vt, fn, meff, dt, shear);
+  EXPECT_NEAR(shear.x(), 2e-5, 1e-20);
+  EXPECT_NEAR(ft2.x(), -0.02 - 0.12, 1e-14);
+}
+
+TEST(TangentialHistory, NoDampingWhenSwitchedOff) {
+  ContactCoefficients c = material();
+  c.tangential_damping = false;
+  Vector3d shear = Vector3d::Zero();
+  const Vector3d ft = tri::tangential_force_history(c, Vector3d::UnitZ(), Vector3d(0.01, 0, 0),
+                                                    10.0, 1.2, 1e-3, shear);
+  EXPECT_NEAR(ft.x(), -0.01, 1e-15);
+}
+
+TEST(TangentialHistory, SlipCapsAtCoulombAndRescalesShear) {
+  const ContactCoefficients c = material();
+  const Vector3d n = Vector3d::UnitZ();
+  Vector3d shear(3e-3, 4e-3, 0); // |kt shear| = 5 N
+  const double fn = 2.0;         // cap: 0.5 * 2 = 1 N
+  const Vector3d ft = tri::tangential_force_history(c, n, Vector3d::Zero(), fn, 1.2, 1e-3, shear);
+  EXPECT_NEAR(ft.norm(), 1.0, 1e-12);
+  EXPECT_NEAR(ft.x(), -0.6, 1e-12); // direction of -shear, no damping added while sliding
+  EXPECT_NEAR(ft.y(), -0.8, 1e-12);
+  EXPECT_NEAR(shear.x(), 0.6 / 1000.0, 1e-15); // shear = -ft / kt
+  EXPECT_NEAR(shear.y(), 0.8 / 1000.0, 1e-15);
+  // An attractive normal force caps by its magnitude (LIGGGHTS uses |Fn|).
+  Vector3d shear2(3e-3, 4e-3, 0);
+  EXPECT_NEAR(tri::tangential_force_history(c, n, Vector3d::Zero(), -fn, 1.2, 1e-3, shear2).norm(),
+              1.0, 1e-12);
+}
+
+TEST(TangentialHistory, ShearIsProjectedOntoRotatedTangentPlane) {
+  ContactCoefficients c = material();
+  c.gammat = 0.0;
+  Vector3d shear(1e-5, 0, 0); // built up while n was +z
+  const double angle = 0.3;   // the normal turned about y
+  const Vector3d n(std::sin(angle), 0, std::cos(angle));
+  const Vector3d old = shear;
+  const Vector3d ft = tri::tangential_force_history(c, n, Vector3d::Zero(), 10.0, 1.2, 1e-3, shear);
+  const Vector3d expected = old - old.dot(n) * n;
+  EXPECT_NEAR(shear.dot(n), 0.0, 1e-20);
+  EXPECT_NEAR((shear - expected).norm(), 0.0, 1e-20);
+  EXPECT_NEAR(shear.norm(), 1e-5 * std::cos(angle), 1e-18);
+  EXPECT_NEAR((ft + c.kt * expected).norm(), 0.0, 1e-15);
+}
+
+TEST(TangentialNoHistory, ViscousBelowCapCoulombAbove) {
+  const ContactCoefficients c = material();
+  const Vector3d vt(0.0, 0.02, 0.0);
+  // Viscous: gammat meff |vt| = 10 * 1.2 * 0.02 = 0.24 N < mu fn = 5 N.
+  Vector3d ft = tri::tangential_force_no_history(c, vt, 10.0, 1.2);
+  EXPECT_NEAR(ft.y(), -0.24, 1e-14);
+  EXPECT_EQ(ft.x(), 0.0);
+  // Coulomb: mu fn = 0.5 * 0.2 = 0.1 N < 0.24 N.
+  ft = tri::tangential_force_no_history(c, vt, 0.2, 1.2);
+  EXPECT_NEAR(ft.y(), -0.1, 1e-15);
+  EXPECT_EQ(tri::tangential_force_no_history(c, Vector3d::Zero(), 10.0, 1.2), Vector3d::Zero());
+}
+
+// ---- kinematics ----
+
+TEST(ContactKinematics, RelativeVelocityIncludesRotation) {
+  const BodyState a = body(Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(0, 0, 2), 1.0);
+  const BodyState b = body(Vector3d(0, 0, 1), Vector3d(0, 1, -3), Vector3d(5, 0, 0), 1.0);
+  const Vector3d p(0.5, 0, 0.5), n(0, 0, 1);
+  const auto k = tri::contact_kinematics(p, n, a, b);
+  // v_a(p) = (1,0,0) + (0,0,2) x (0.5,0,0.5) = (1, 1, 0)
+  // v_b(p) = (0,1,-3) + (5,0,0) x (0.5,0,-0.5) = (0, 1 + 2.5, -3)
+  EXPECT_NEAR((k.v_rel - Vector3d(-1, 2.5, -3)).norm(), 0.0, 1e-15);
+  EXPECT_DOUBLE_EQ(k.v_n, -3.0); // approaching: negative
+  EXPECT_NEAR((k.v_t - Vector3d(-1, 2.5, 0)).norm(), 0.0, 1e-15);
+}
+
+// ---- pair force ----
+
+TEST(PairContactForce, NormalForceDirectionAndStaticValue) {
+  ContactCoefficients c = material();
+  const BodyState a = body(Vector3d(0, 0, 0.003), Vector3d::Zero(), Vector3d::Zero(), 1e-3);
+  const BodyState b = body(Vector3d(0, 0, -0.003), Vector3d::Zero(), Vector3d::Zero(), 1e-3);
+  double history[tri::kHistoryDoubles] = {};
+  // a above b: normal from a to b is -z; a is pushed up by kn overlap = 0.2 N.
+  const auto r = tri::pair_contact_force({point(Vector3d::Zero(), -Vector3d::UnitZ(), 1e-4)}, a, b,
+                                         c, 1e-6, history);
+  EXPECT_NEAR((r.force_a - Vector3d(0, 0, 0.2)).norm(), 0.0, 1e-15);
+  EXPECT_NEAR(r.torque_a.norm(), 0.0, 1e-18);
+}
+
+TEST(PairContactForce, TorqueIsLeverCrossForceIncludingFriction) {
+  ContactCoefficients c = material();
+  const BodyState a = body(Vector3d(0, 0, 0.002), Vector3d(0.05, 0, 0), Vector3d(0, 3, 0), 2e-3);
+  const BodyState b = body(Vector3d(0.001, 0, -0.002), Vector3d(0, 0.01, 0), Vector3d(1, 0, 0), 1e-3);
+  const ContactPoint cp = point(Vector3d(0.0005, 0.0002, 0), -Vector3d::UnitZ(), 1e-4);
+  double history[tri::kHistoryDoubles] = {};
+  const auto r = tri::pair_contact_force({cp}, a, b, c, 1e-5, history);
+  // Rebuild the force on b from the sub-models by hand.
+  const auto k = tri::contact_kinematics(cp.point, cp.normal, a, b);
+  const double meff = tri::effective_mass(a.mass, b.mass);
+  const double fn = tri::normal_force(c, cp.overlap, k.v_n, meff);
+  Vector3d shear = Vector3d::Zero();
+  const Vector3d ft = tri::tangential_force_history(c, cp.normal, k.v_t, fn, meff, 1e-5, shear);
+  ASSERT_GT(ft.norm(), 1e-3 * fn); // friction matters in this case
+  const Vector3d fb = fn * cp.normal + ft;
+  EXPECT_NEAR((r.force_a + fb).norm(), 0.0, 1e-15);
+  EXPECT_NEAR((r.torque_a - (cp.point - a.x).cross(-fb)).norm(), 0.0, 1e-18);
+  EXPECT_NEAR((r.torque_b - (cp.point - b.x).cross(fb)).norm(), 0.0, 1e-18);
+  // Without the friction part the torque differs: friction enters the torque.
+  EXPECT_GT((r.torque_a - (cp.point - a.x).cross(-fn * cp.normal)).norm(), 1e-9);
+  // The history slot now holds this contact's normal, shear and lever.
+  EXPECT_NEAR((tri::slot_normal(history, 0) - cp.normal).norm(), 0.0, 1e-15);
+  EXPECT_NEAR((tri::slot_shear(history, 0) - shear).norm(), 0.0, 1e-20);
+  EXPECT_NEAR((tri::slot_lever(history, 0) - (cp.point - a.x)).norm(), 0.0, 1e-18);
+}
+
+TEST(PairContactForce, NewtonThirdLawAndAngularMomentumBalance) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  auto rv = [&](double s) -> Vector3d { return Vector3d(u(rng), u(rng), u(rng)) * s; };
+  for (const auto model : {tri::TangentialModel::history, tri::TangentialModel::no_history})
+    for (int trial = 0; trial < 20; ++trial) {
+      ContactCoefficients c = material();
+      c.tangential = model;
+      const BodyState a = body(rv(0.003), rv(0.1), rv(10.0), 1e-3);
+      const BodyState b = body(rv(0.003), rv(0.1), rv(10.0), 2e-3);
+      std::vector<ContactPoint> pts;
+      for (int i = 0; i < 6; ++i) // more than the history slots on purpose
+        pts.push_back(point(rv(0.002), rv(1.0), 1e-5 * (6 - i)));
+      double history[tri::kHistoryDoubles] = {};
+      for (int step = 0; step < 3; ++step) {
+        const auto r = tri::pair_contact_force(pts, a, b, c, 1e-5, history);
+        const Vector3d force_b = -r.force_a;
+        for (const Vector3d &o : {Vector3d(Vector3d::Zero()), rv(1.0)}) {
+          const Vector3d total = (a.x - o).cross(r.force_a) + r.torque_a +
+                                 (b.x - o).cross(force_b) + r.torque_b;
+          const double scale = r.force_a.norm() * (0.01 + o.norm());
+          EXPECT_NEAR(total.norm(), 0.0, 1e-13 * scale);
+        }
+      }
+    }
+}
+
+// Patches keep their shear when they swap places in the list, and a patch that appears next to
+// them with the same normal starts from zero (matched by lever, not by order).
+TEST(PairContactForce, HistoryFollowsPatchesByNormalAndPosition) {
+  ContactCoefficients c = material();
+  c.gammat = 0.0;
+  const BodyState a = body(Vector3d(0, 0, 0.002), Vector3d::Zero(), Vector3d::Zero(), 1e-3);
+  BodyState b = body(Vector3d(0, 0, -0.002), Vector3d(0.01, 0, 0), Vector3d::Zero(), 1e-3);
+  const Vector3d down = -Vector3d::UnitZ();
+  const ContactPoint left = point(Vector3d(-0.001, 0, 0), down, 1e-4);
+  const ContactPoint right = point(Vector3d(0.001, 0, 0), down, 5e-5);
+  const ContactPoint side = point(Vector3d(0.0015, 0, 0.001), Vector3d::UnitX(), 5e-5);
+  double history[tri::kHistoryDoubles] = {};
+  const double dt = 1e-4;
+  tri::pair_contact_force({left, right}, a, b, c, dt, history); // both gain 1e-6 shear
+  b.v = Vector3d::Zero();
+  // Reordered, a perpendicular patch appears, the left patch moved a little.
+  ContactPoint left2 = left;
+  left2.point += Vector3d(2e-5, 0, 0);
+  left2.normal = Vector3d(0.01, 0, -1).normalized();
+  double after[tri::kHistoryDoubles];
+  std::copy(history, history + tri::kHistoryDoubles, after);
+  const auto r = tri::pair_contact_force({side, right, left2}, a, b, c, dt, after);
+  EXPECT_EQ(r.contacts_after, 3);
+  // Slot k = contact k after the call.
+  EXPECT_NEAR(tri::slot_shear(after, 0).norm(), 0.0, 1e-20); // side: new
+  EXPECT_NEAR(tri::slot_shear(after, 1).x(), 1e-6, 1e-18);   // right kept its shear
+  EXPECT_NEAR(tri::slot_shear(after, 2).norm(), 1e-6, 1e-8); // left kept it (re-projected)
+  EXPECT_FALSE(tri::slot_occupied(after, 3));
+  // The left patch vanishes: its slot is dropped, the others persist.
+  double later[tri::kHistoryDoubles];
+  std::copy(after, after + tri::kHistoryDoubles, later);
+  tri::pair_contact_force({right}, a, b, c, dt, later);
+  EXPECT_NEAR(tri::slot_shear(later, 0).x(), 1e-6, 1e-18);
+  for (int s = 1; s < tri::kHistorySlots; ++s)
+    EXPECT_FALSE(tri::slot_occupied(later, s));
+  // No contacts: the history is cleared.
+  tri::pair_contact_force({}, a, b, c, dt, later);
+  for (double v : later)
+    EXPECT_EQ(v, 0.0);
+}
+
+TEST(PairContactForce, MatchingIsByLeverAmongEqualNormals) {
+  double history[tri::kHistoryDoubles] = {};
+  const Vector3d down = -Vector3d::UnitZ();
+  tri::write_slot(history, 0, down, Vector3d(1, 0, 0), Vector3d(0.001, 0, 0));
+  tri::write_slot(history, 1, down, Vector3d(2, 0, 0), Vector3d(-0.001, 0, 0));
+  const ContactPoint pts[2] = {point(Vector3d(-0.00099, 0, 0), down, 1e-4),
+                               point(Vector3d(0.00101, 0, 0), down, 1e-4)};
+  int slot[tri::kHistorySlots];
+  tri::match_history(history, pts, 2, Vector3d::Zero(), slot);
+  EXPECT_EQ(slot[0], 1);
+  EXPECT_EQ(slot[1], 0);
+  // A normal beyond the match angle never inherits a slot.
+  const ContactPoint turned = point(Vector3d(0.001, 0, 0), Vector3d(1, 0, -0.9), 1e-4);
+  tri::match_history(history, &turned, 1, Vector3d::Zero(), slot);
+  EXPECT_EQ(slot[0], -1);
+}
+
+TEST(PairContactForce, StatisticsAreReturned) {
+  const ContactCoefficients c = material();
+  const BodyState a = body(Vector3d(0, 0, 0.002), Vector3d::Zero(), Vector3d::Zero(), 1e-3);
+  const BodyState b = body(Vector3d(0, 0, -0.002), Vector3d::Zero(), Vector3d::Zero(), 1e-3);
+  std::vector<ContactPoint> pts;
+  for (int i = 0; i < 5; ++i)
+    pts.push_back(point(Vector3d(1e-3 * i, 0, 0), -Vector3d::UnitZ(), 1e-5 * (i + 1)));
+  pts[2].intersecting = true;
+  pts[2].min_distance = 0.0;
+  double history[tri::kHistoryDoubles] = {};
+  const auto r = tri::pair_contact_force(pts, a, b, c, 1e-5, history);
+  EXPECT_EQ(r.contacts_before, 15); // 5 points x 3 merged each
+  EXPECT_EQ(r.contacts_after, 5);
+  EXPECT_EQ(r.untracked, 1); // 5 points, 4 slots
+  EXPECT_DOUBLE_EQ(r.max_overlap, 5e-5);
+  EXPECT_EQ(r.min_distance, 0.0);
+  EXPECT_TRUE(r.intersecting);
+  const auto none = tri::pair_contact_force({}, a, b, c, 1e-5, history);
+  EXPECT_EQ(none.contacts_after, 0);
+  EXPECT_EQ(none.force_a, Vector3d::Zero());
+}
+
+} // namespace
