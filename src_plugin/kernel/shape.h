@@ -23,14 +23,15 @@ constexpr double kConvexityTolerance = 1e-9;
 
 struct Shape {
   std::string name;
-  TriangleMesh mesh;                   // body frame; unreferenced vertices removed
-  TriangleSoA soa;                     // the same triangles, same order, as SoA
-  double volume = 0.0;                 // m^3
-  Eigen::Vector3d inertia_per_density; // principal moments about the centre of mass, m^5
-                                       // (x density = kg m^2), ascending
-  double bounding_radius = 0.0;        // max vertex distance from the centre of mass, m
-  double min_edge_length = 0.0;        // shortest triangle edge, m
-  bool convex = false;                 // every vertex on or behind every face plane
+  TriangleMesh mesh;   // body frame; unreferenced vertices removed
+  TriangleSoA soa;     // the same triangles, same order, as SoA
+  double volume = 0.0; // m^3
+  // Principal moments about the centre of mass, ascending, per unit density: m^5
+  // (x density in kg/m^3 = kg m^2). The body-frame inertia tensor is their diagonal matrix.
+  Eigen::Vector3d inertia_per_density = Eigen::Vector3d::Zero();
+  double bounding_radius = 0.0; // max vertex distance from the centre of mass, m
+  double min_edge_length = 0.0; // shortest triangle edge, m
+  bool convex = false;          // every vertex on or behind every face plane (kConvexityTolerance)
 };
 
 // Validates the mesh (validate_mesh: throws ShapeError, message prefixed with
