@@ -8,8 +8,8 @@ namespace tri {
 using Eigen::Vector3d;
 
 PairForceResult pair_contact_force(const std::vector<ContactPoint> &contacts, const BodyState &a,
-                                   const BodyState &b, const ContactCoefficients &coeff,
-                                   double dt, double *history) {
+                                   const BodyState &b, const ContactCoefficients &coeff, double dt,
+                                   double *history) {
   PairForceResult r;
   const int n = static_cast<int>(contacts.size());
   const bool with_history = coeff.tangential == TangentialModel::history && history != nullptr;

@@ -26,9 +26,9 @@ struct PairForceResult {
   Eigen::Vector3d force_a = Eigen::Vector3d::Zero();  // N on a; the force on b is -force_a
   Eigen::Vector3d torque_a = Eigen::Vector3d::Zero(); // N m on a about x_a
   Eigen::Vector3d torque_b = Eigen::Vector3d::Zero(); // N m on b about x_b (walls: ignore)
-  int contacts_before = 0; // triangle-pair contacts reduced into the points (sum num_merged)
-  int contacts_after = 0;  // contact points
-  int untracked = 0;       // points beyond kHistorySlots: no shear carried this step
+  int contacts_before = 0;  // triangle-pair contacts reduced into the points (sum num_merged)
+  int contacts_after = 0;   // contact points
+  int untracked = 0;        // points beyond kHistorySlots: no shear carried this step
   double max_overlap = 0.0; // m, deepest penetration of the soft layers
   double min_distance = std::numeric_limits<double>::infinity(); // m, closest triangle pair
   bool intersecting = false; // some triangles intersect (the soft layer was overrun)
@@ -38,7 +38,7 @@ struct PairForceResult {
 // model); ignored and may be null for `no_history`. dt > 0 in s. With no contacts the history
 // is cleared and the result is zero.
 PairForceResult pair_contact_force(const std::vector<ContactPoint> &contacts, const BodyState &a,
-                                   const BodyState &b, const ContactCoefficients &coeff,
-                                   double dt, double *history);
+                                   const BodyState &b, const ContactCoefficients &coeff, double dt,
+                                   double *history);
 
 } // namespace tri

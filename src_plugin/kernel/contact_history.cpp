@@ -6,8 +6,8 @@
 
 namespace tri {
 
-void write_slot(double *history, int s, const Eigen::Vector3d &normal,
-                const Eigen::Vector3d &shear, const Eigen::Vector3d &lever) {
+void write_slot(double *history, int s, const Eigen::Vector3d &normal, const Eigen::Vector3d &shear,
+                const Eigen::Vector3d &lever) {
   double *h = history + s * kHistorySlotDoubles;
   for (int k = 0; k < 3; ++k) {
     h[k] = normal[k];

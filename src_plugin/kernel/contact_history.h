@@ -51,7 +51,7 @@ inline Eigen::Vector3d slot_shear(const double *history, int s) {
 inline Eigen::Vector3d slot_lever(const double *history, int s) {
   return Eigen::Vector3d(history + s * kHistorySlotDoubles + 6);
 }
-void write_slot(double *history, int s, const Eigen::Vector3d &normal,
-                const Eigen::Vector3d &shear, const Eigen::Vector3d &lever);
+void write_slot(double *history, int s, const Eigen::Vector3d &normal, const Eigen::Vector3d &shear,
+                const Eigen::Vector3d &lever);
 
 } // namespace tri

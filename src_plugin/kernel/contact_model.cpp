@@ -12,8 +12,11 @@ std::string coefficient_error(const ContactCoefficients &c) {
   const struct {
     const char *name;
     double value;
-  } values[] = {{"kn", c.kn},         {"kt", c.kt},          {"gamman", c.gamman},
-                {"gammat", c.gammat}, {"coefficientFriction", c.mu}};
+  } values[] = {{"kn", c.kn},
+                {"kt", c.kt},
+                {"gamman", c.gamman},
+                {"gammat", c.gammat},
+                {"coefficientFriction", c.mu}};
   for (const auto &v : values) {
     if (!std::isfinite(v.value))
       return std::string(v.name) + " is not finite";
@@ -58,8 +61,8 @@ Vector3d tangential_force_history(const ContactCoefficients &c, const Vector3d &
   return f_t;
 }
 
-Vector3d tangential_force_no_history(const ContactCoefficients &c, const Vector3d &v_t,
-                                     double f_n, double m_eff) {
+Vector3d tangential_force_no_history(const ContactCoefficients &c, const Vector3d &v_t, double f_n,
+                                     double m_eff) {
   const double speed = v_t.norm();
   if (!(speed > 0.0))
     return Vector3d::Zero();

@@ -31,11 +31,11 @@ enum class TangentialModel {
 // One struct of coefficients, the values of LIGGGHTS's `fix property/global` entries for
 // hooke/stiffness (looked up and mixed by the host for the pair's atom types).
 struct ContactCoefficients {
-  double kn = 0.0;     // N/m, normal stiffness
-  double kt = 0.0;     // N/m, tangential stiffness (history model)
-  double gamman = 0.0; // 1/s (multiplied by m_eff), or kg/s with absolute_damping
-  double gammat = 0.0; // 1/s (multiplied by m_eff), or kg/s with absolute_damping
-  double mu = 0.0;     // coefficient of friction, >= 0
+  double kn = 0.0;               // N/m, normal stiffness
+  double kt = 0.0;               // N/m, tangential stiffness (history model)
+  double gamman = 0.0;           // 1/s (multiplied by m_eff), or kg/s with absolute_damping
+  double gammat = 0.0;           // 1/s (multiplied by m_eff), or kg/s with absolute_damping
+  double mu = 0.0;               // coefficient of friction, >= 0
   bool absolute_damping = false; // LIGGGHTS `absolute_damping on`: gammas are kg/s
   // LIGGGHTS `limitForce on`: F_n >= 0 (no attraction from the damper). LIGGGHTS's default is
   // off; the tri/gran deck default is on (repulsive only, as in the paper).
@@ -68,8 +68,7 @@ Eigen::Vector3d tangential_force_history(const ContactCoefficients &c, const Eig
 // Tangential sub-model `no_history`: F_t = -min(gamma_t |v_t|, mu |F_n|) v_t / |v_t|, zero when
 // v_t = 0 (gamma_t as above). tangential_damping does not apply: here friction IS damping.
 Eigen::Vector3d tangential_force_no_history(const ContactCoefficients &c,
-                                            const Eigen::Vector3d &v_t, double f_n,
-                                            double m_eff);
+                                            const Eigen::Vector3d &v_t, double f_n, double m_eff);
 
 // State of a rigid body at the start of the force computation. For a wall: mass <= 0 (or
 // infinite), v the wall's velocity at the contact, omega zero (x is then irrelevant).

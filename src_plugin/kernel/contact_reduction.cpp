@@ -124,12 +124,6 @@ void flip_sunk_members(std::vector<Raw> &raw, const std::vector<int> &members, d
   }
 }
 
-struct Class {
-  int seed;      // index into raw of the deepest member
-  int component; // root index
-  bool alive;
-};
-
 // Members of class `s`, measured along class m's normal, overlap no more than m does.
 bool absorbed_by(const std::vector<Raw> &raw, const std::vector<int> &members,
                  const std::vector<int> &cls, int s, const Raw &mseed, double layer) {
@@ -204,8 +198,11 @@ void reduce_clusters(std::vector<Raw> &raw, double layer, const ReductionParams 
   cls.assign(n, -1);
   std::vector<int> &absorbed = work.absorbed;
   absorbed.assign(n, 0);
-  std::vector<Class> classes;
-  std::vector<int> group;
+  std::vector<int> &seeds = work.seeds; // class c: seeds[c] = its deepest member (raw index)
+  std::vector<int> &alive = work.alive; // class c not absorbed
+  std::vector<int> &group = work.group; // members of the current component
+  seeds.clear();
+  alive.clear();
   for (int begin = 0; begin < n;) {
     int end = begin;
     while (end < n && label[members[end]] == label[members[begin]])
@@ -218,38 +215,38 @@ void reduce_clusters(std::vector<Raw> &raw, double layer, const ReductionParams 
         return raw[i].overlap > raw[j].overlap;
       return i < j;
     });
-    const int first_class = static_cast<int>(classes.size());
+    const int first_class = static_cast<int>(seeds.size());
     for (int seed : group) {
       if (cls[seed] >= 0)
         continue;
-      const int c = static_cast<int>(classes.size());
-      classes.push_back({seed, label[seed], true});
+      const int c = static_cast<int>(seeds.size());
+      seeds.push_back(seed);
+      alive.push_back(1);
       for (int i : group)
         if (cls[i] < 0 && raw[i].normal.dot(raw[seed].normal) >= cos_split)
           cls[i] = c;
     }
     // Rim absorption: a later class into the first earlier (deeper) one that explains it.
-    for (int s = first_class + 1; s < static_cast<int>(classes.size()); ++s) {
-      const Raw &sseed = raw[classes[s].seed];
+    for (int s = first_class + 1; s < static_cast<int>(seeds.size()); ++s) {
+      const Raw &sseed = raw[seeds[s]];
       for (int m = first_class; m < s; ++m) {
-        if (!classes[m].alive)
+        if (!alive[m])
           continue;
-        const Raw &mseed = raw[classes[m].seed];
-        if (sseed.normal.dot(mseed.normal) <= 0.0 ||
-            !absorbed_by(raw, group, cls, s, mseed, layer))
+        const Raw &mseed = raw[seeds[m]];
+        if (sseed.normal.dot(mseed.normal) <= 0.0 || !absorbed_by(raw, group, cls, s, mseed, layer))
           continue;
         for (int i : group)
           if (cls[i] == s) {
             cls[i] = m;
             absorbed[i] = 1;
           }
-        classes[s].alive = false;
+        alive[s] = 0;
         break;
       }
     }
-    for (int c = first_class; c < static_cast<int>(classes.size()); ++c)
-      if (classes[c].alive)
-        out.push_back(make_point(raw, group, cls, absorbed, c, classes[c].seed, layer, ref));
+    for (int c = first_class; c < static_cast<int>(seeds.size()); ++c)
+      if (alive[c])
+        out.push_back(make_point(raw, group, cls, absorbed, c, seeds[c], layer, ref));
     begin = end;
   }
   // Deepest first; ties keep component/class order (deterministic).

@@ -81,12 +81,12 @@
 namespace tri {
 
 struct ContactPoint {
-  Eigen::Vector3d point = Eigen::Vector3d::Zero();  // m, world frame
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();   // m, world frame
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ(); // unit, from a towards b
-  double overlap = 0.0;      // m, > 0: eps_a + eps_b - (signed) distance of the deepest member
-  double min_distance = 0.0; // m, >= 0: smallest closest-point distance among the members
-  int num_merged = 0;        // raw triangle-pair contacts represented by this point
-  bool intersecting = false; // some member's triangles intersect
+  double overlap = 0.0;       // m, > 0: eps_a + eps_b - (signed) distance of the deepest member
+  double min_distance = 0.0;  // m, >= 0: smallest closest-point distance among the members
+  int num_merged = 0;         // raw triangle-pair contacts represented by this point
+  bool intersecting = false;  // some member's triangles intersect
   int tri_a = -1, tri_b = -1; // the deepest member's triangles (diagnostics)
 };
 
@@ -98,9 +98,9 @@ enum class ReductionMethod {
 
 struct ReductionParams {
   ReductionMethod method = ReductionMethod::clusters;
-  double link_length = 0.0;  // m, clusters: see recommended_link_length(); must be > 0
+  double link_length = 0.0; // m, clusters: see recommended_link_length(); must be > 0
   double split_angle = 0.7853981633974483; // rad (45 deg), clusters: normal-class half-angle
-  double min_width = 0.0;    // m, paper_min_width: the minimum mesh width of the two meshes
+  double min_width = 0.0; // m, paper_min_width: the minimum mesh width of the two meshes
   // Unit, from a towards b; used only where a normal is otherwise undefined (see above).
   Eigen::Vector3d reference_direction = Eigen::Vector3d::UnitZ();
 };
@@ -120,7 +120,7 @@ struct ReductionWorkspace {
     bool intersecting;
   };
   std::vector<Raw> raw;
-  std::vector<int> parent, order, label, cls, absorbed;
+  std::vector<int> parent, order, label, cls, absorbed, seeds, alive, group;
 };
 
 // Reduces `n` triangle-pair contacts of one pair (entries with overlap <= 0 are ignored) and

@@ -194,7 +194,8 @@ TEST(PairContactForce, NormalForceDirectionAndStaticValue) {
 TEST(PairContactForce, TorqueIsLeverCrossForceIncludingFriction) {
   ContactCoefficients c = material();
   const BodyState a = body(Vector3d(0, 0, 0.002), Vector3d(0.05, 0, 0), Vector3d(0, 3, 0), 2e-3);
-  const BodyState b = body(Vector3d(0.001, 0, -0.002), Vector3d(0, 0.01, 0), Vector3d(1, 0, 0), 1e-3);
+  const BodyState b =
+      body(Vector3d(0.001, 0, -0.002), Vector3d(0, 0.01, 0), Vector3d(1, 0, 0), 1e-3);
   const ContactPoint cp = point(Vector3d(0.0005, 0.0002, 0), -Vector3d::UnitZ(), 1e-4);
   double history[tri::kHistoryDoubles] = {};
   const auto r = tri::pair_contact_force({cp}, a, b, c, 1e-5, history);
@@ -235,8 +236,8 @@ TEST(PairContactForce, NewtonThirdLawAndAngularMomentumBalance) {
         const auto r = tri::pair_contact_force(pts, a, b, c, 1e-5, history);
         const Vector3d force_b = -r.force_a;
         for (const Vector3d &o : {Vector3d(Vector3d::Zero()), rv(1.0)}) {
-          const Vector3d total = (a.x - o).cross(r.force_a) + r.torque_a +
-                                 (b.x - o).cross(force_b) + r.torque_b;
+          const Vector3d total =
+              (a.x - o).cross(r.force_a) + r.torque_a + (b.x - o).cross(force_b) + r.torque_b;
           const double scale = r.force_a.norm() * (0.01 + o.norm());
           EXPECT_NEAR(total.norm(), 0.0, 1e-13 * scale);
         }

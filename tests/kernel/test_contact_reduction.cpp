@@ -170,7 +170,7 @@ Mesh plane(double half, int k) {
 const double kSide = 0.004; // m, the design's rock size
 const double kEps = 1e-4;   // m, soft layer of each body
 const double kLayer = 2 * kEps;
-const double kKn = 2000.0;  // N/m
+const double kKn = 2000.0; // N/m
 
 // cell_a, cell_b: grid cell sides; a grid triangle's longest edge is the cell's diagonal and
 // its shortest the cell's side (the paper's minimum mesh width).
@@ -245,7 +245,8 @@ TEST(ContactReduction, FlatFaceForceIndependentOfMeshResolution) {
     for (const bool tilted : {false, true})
       for (const int plane_k : {1, 8, 60})
         for (const int k : {1, 2, 4, 8}) {
-          const Outcome o = run_case({k, plane_k, overlap}, tilted ? small_tilt() : Matrix3d::Identity());
+          const Outcome o =
+              run_case({k, plane_k, overlap}, tilted ? small_tilt() : Matrix3d::Identity());
           const double expected = kKn * overlap;
           std::printf("overlap/layer %.2f tilt %d plane %2d tri/face %3d: raw %5d paper %4d "
                       "clusters %d  Fz/(kn overlap) %.6f  point-centre (%.2e, %.2e)\n",
@@ -311,7 +312,8 @@ TEST(ContactReduction, WedgedInCornerKeepsOneContactPerFace) {
   const Vector3d centre(-0.5 * kSide - gap_wall, 0, 0.5 * kSide + gap_floor);
   const Mesh a = cube(kSide, 4, centre);
   Mesh b;
-  add_grid(b, Vector3d(-2 * kSide, -kSide, 0), Vector3d(2 * kSide, 0, 0), Vector3d(0, 2 * kSide, 0), 16);
+  add_grid(b, Vector3d(-2 * kSide, -kSide, 0), Vector3d(2 * kSide, 0, 0), Vector3d(0, 2 * kSide, 0),
+           16);
   add_grid(b, Vector3d(0, -kSide, 0), Vector3d(0, 2 * kSide, 0), Vector3d(0, 0, 2 * kSide), 16);
   const auto raw = brute_contacts(a, b, kLayer);
   tri::ReductionParams p = params_for(kSide / 4, kSide / 8);
@@ -376,9 +378,10 @@ TEST(ContactReduction, IntersectingContactWithoutNormalGetsReferenceDirection) {
 // weighted mean cancels, yet the contact's normal is finite and unit.
 TEST(ContactReduction, OpposingIntersectingNormalsStayFinite) {
   const Vector3d n(0, 0, 1);
-  const auto points = tri::reduce_contacts({hand_contact(0, 0, Vector3d::Zero(), n, 0.0, true),
-                                            hand_contact(1, 1, Vector3d(1e-5, 0, 0), -n, 0.0, true)},
-                                           kEps, kEps, params_for(1e-3, 1e-3));
+  const auto points =
+      tri::reduce_contacts({hand_contact(0, 0, Vector3d::Zero(), n, 0.0, true),
+                            hand_contact(1, 1, Vector3d(1e-5, 0, 0), -n, 0.0, true)},
+                           kEps, kEps, params_for(1e-3, 1e-3));
   ASSERT_FALSE(points.empty());
   for (const ContactPoint &c : points) {
     EXPECT_TRUE(c.normal.allFinite());
@@ -411,9 +414,11 @@ TEST(ContactReduction, RimContactIsAbsorbedPerpendicularFaceIsNot) {
   const double g = 0.2 * kLayer, h = 1.5 * g;
   std::vector<TriangleContact> raw;
   for (int i = 0; i < 3; ++i)
-    raw.push_back(hand_contact(i, i, Vector3d(-1e-4 * i, 0, 0.5 * g), -Vector3d::UnitZ(), g, false));
+    raw.push_back(
+        hand_contact(i, i, Vector3d(-1e-4 * i, 0, 0.5 * g), -Vector3d::UnitZ(), g, false));
   const Vector3d corner(0, 0, g), below(h, 0, 0);
-  raw.push_back({7, 7, (below - corner).norm(), corner, below, (below - corner).normalized(), false, 0.0});
+  raw.push_back(
+      {7, 7, (below - corner).norm(), corner, below, (below - corner).normalized(), false, 0.0});
   auto points = tri::reduce_contacts(raw, kEps, kEps, params_for(1e-4, 1e-4));
   ASSERT_EQ(points.size(), 1u);
   EXPECT_EQ(points[0].num_merged, 4);
@@ -421,7 +426,8 @@ TEST(ContactReduction, RimContactIsAbsorbedPerpendicularFaceIsNot) {
   EXPECT_NEAR(points[0].point.x(), -1e-4, 1e-15);
   EXPECT_NEAR(points[0].overlap, kLayer - g, 1e-15);
   // A wall face at x = 1.5 g, touched by a's side at distance 0.9 g: a contact of its own.
-  raw.push_back(hand_contact(8, 8, Vector3d(1.05 * g, 0, 0.5 * g), Vector3d::UnitX(), 0.9 * g, false));
+  raw.push_back(
+      hand_contact(8, 8, Vector3d(1.05 * g, 0, 0.5 * g), Vector3d::UnitX(), 0.9 * g, false));
   points = tri::reduce_contacts(raw, kEps, kEps, params_for(1e-4, 1e-4));
   ASSERT_EQ(points.size(), 2u);
   EXPECT_NEAR(points[0].normal.x(), 1.0, 1e-15);
@@ -431,16 +437,16 @@ TEST(ContactReduction, RimContactIsAbsorbedPerpendicularFaceIsNot) {
 // Raw contacts at or beyond the layer carry no force and are dropped; no contacts, no points.
 TEST(ContactReduction, ContactsOutsideTheLayerAreIgnored) {
   EXPECT_TRUE(tri::reduce_contacts({}, kEps, kEps, params_for(1e-3, 1e-3)).empty());
-  const auto points = tri::reduce_contacts(
-      {hand_contact(0, 0, Vector3d::Zero(), Vector3d::UnitZ(), kLayer, false)}, kEps, kEps,
-      params_for(1e-3, 1e-3));
+  const auto points =
+      tri::reduce_contacts({hand_contact(0, 0, Vector3d::Zero(), Vector3d::UnitZ(), kLayer, false)},
+                           kEps, kEps, params_for(1e-3, 1e-3));
   EXPECT_TRUE(points.empty());
 }
 
 TEST(ContactReduction, RecommendedLinkLengthUsesFinerMesh) {
-  EXPECT_NEAR(tri::recommended_link_length(1e-3, std::numeric_limits<double>::infinity(), 1e-4,
-                                           2e-4),
-              2e-3 + 3e-4, 1e-8 * 2.3e-3);
+  EXPECT_NEAR(
+      tri::recommended_link_length(1e-3, std::numeric_limits<double>::infinity(), 1e-4, 2e-4),
+      2e-3 + 3e-4, 1e-8 * 2.3e-3);
   EXPECT_NEAR(tri::recommended_link_length(5e-3, 1e-3, 1e-4, 1e-4), 2.2e-3, 1e-8 * 2.2e-3);
 }
 
