@@ -23,7 +23,7 @@ struct TrianglePairIndex {
 };
 
 struct HybridSettings {
-  int newton_iterations = 6;   // one of penalty_iterations_supported()
+  int newton_iterations = 4;   // one of penalty_iterations_supported()
   PenaltyParameters penalty;   // scale-free weights, penalty_distance.h
   // Absolute error (length) accepted from the penalty: a pair is kept from the penalty only
   // if it is proven separated (lower > 0) and upper - lower <= tolerance; its distance is

@@ -45,7 +45,7 @@ struct ContactOptions {
   ContactParallelism parallel = ContactParallelism::None;
   int batch_size = 8; // pairs per batch: BatchedHybrid's fallback unit, Batches' work unit
   bool cull = true;
-  int newton_iterations = 6;      // penalty steps; one of penalty_iterations_supported()
+  int newton_iterations = 4;      // penalty steps; one of penalty_iterations_supported()
   double tolerance_ratio = 1e-4;  // hybrid distance tolerance / min(eps_a, eps_b)
   PenaltyParameters penalty;      // scale-free penalty weight and regularisation
 };
