@@ -127,8 +127,8 @@ void penalty_distances(const TriangleSoA &a, const TriangleSoA &b, const Triangl
       block.get_lane(l, ta, tb);
       double l2 = 0.0;
       for (int k = 0; k < 3; ++k)
-        l2 = std::max({l2, (ta[(k + 1) % 3] - ta[k]).squaredNorm(),
-                       (tb[(k + 1) % 3] - tb[k]).squaredNorm()});
+        l2 = std::max(
+            {l2, (ta[(k + 1) % 3] - ta[k]).squaredNorm(), (tb[(k + 1) % 3] - tb[k]).squaredNorm()});
       if (r.upper[l] > kTouchRatio * std::sqrt(l2)) {
         out[first + l] = accepted_result(r, l);
       } else {

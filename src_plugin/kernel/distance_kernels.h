@@ -23,8 +23,8 @@ struct TrianglePairIndex {
 };
 
 struct HybridSettings {
-  int newton_iterations = 4;   // one of penalty_iterations_supported()
-  PenaltyParameters penalty;   // scale-free weights, penalty_distance.h
+  int newton_iterations = 4; // one of penalty_iterations_supported()
+  PenaltyParameters penalty; // scale-free weights, penalty_distance.h
   // Absolute error (length) accepted from the penalty: a pair is kept from the penalty only
   // if it is proven separated (lower > 0) and upper - lower <= tolerance; its distance is
   // then within `tolerance` of the true distance (penalty_distance.h). Everything else

@@ -29,9 +29,7 @@ TRI_INLINE P3 cross(P3 a, P3 b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 TRI_INLINE double clamp01(double v) { return std::min(1.0, std::max(0.0, v)); }
-TRI_INLINE P3 select(bool c, P3 a, P3 b) {
-  return {c ? a.x : b.x, c ? a.y : b.y, c ? a.z : b.z};
-}
+TRI_INLINE P3 select(bool c, P3 a, P3 b) { return {c ? a.x : b.x, c ? a.y : b.y, c ? a.z : b.z}; }
 
 // A face whose doubled area |n| is below kSliverRatio * (longest edge)^2 is a sliver: its
 // point-face checks are skipped and it is represented by its three edges only. The cut
@@ -115,7 +113,8 @@ TRI_INLINE Face face_of(const P3 v[3]) {
 // The 15 checks of one triangle pair. `a` and `b` hold the three vertices of each triangle.
 // Returns the smallest squared distance and its closest points; ties keep the first check in
 // the fixed order: vertices of a on face b, vertices of b on face a, then edge pairs (i, j).
-TRI_INLINE CheckResult fifteen_checks(const P3 a[3], const P3 b[3], const Face &fa, const Face &fb) {
+TRI_INLINE CheckResult fifteen_checks(const P3 a[3], const P3 b[3], const Face &fa,
+                                      const Face &fb) {
   const P3 ea[3] = {a[1] - a[0], a[2] - a[1], a[0] - a[2]};
   const P3 eb[3] = {b[1] - b[0], b[2] - b[1], b[0] - b[2]};
   CheckResult best{INFINITY, a[0], b[0]};

@@ -75,8 +75,7 @@ void run_kernel(const TriangleSoA &a, const TriangleSoA &b, const ContactOptions
   case DistanceKernel::Hybrid:
     return hybrid_distances(a, b, pairs + first, n, hs, 0, results + first, counters);
   case DistanceKernel::BatchedHybrid:
-    return hybrid_distances(a, b, pairs + first, n, hs, opt.batch_size, results + first,
-                            counters);
+    return hybrid_distances(a, b, pairs + first, n, hs, opt.batch_size, results + first, counters);
   }
 }
 
@@ -122,10 +121,10 @@ void find_triangle_contacts(const TriangleSoA &a, double eps_a, const TriangleSo
       nthreads = omp_get_num_threads();
       thread = omp_get_thread_num();
 #endif
-      const int first = std::min(count, static_cast<int>(static_cast<long long>(units) * thread /
-                                                         nthreads) * unit);
-      const int last = std::min(count, static_cast<int>(static_cast<long long>(units) *
-                                                        (thread + 1) / nthreads) * unit);
+      const int first = std::min(
+          count, static_cast<int>(static_cast<long long>(units) * thread / nthreads) * unit);
+      const int last = std::min(
+          count, static_cast<int>(static_cast<long long>(units) * (thread + 1) / nthreads) * unit);
       HybridCounters mine;
       run_kernel(a, b, opt, hs, pairs, results, first, last, mine);
 #pragma omp critical(tri_contact_counters)

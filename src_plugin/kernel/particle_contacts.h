@@ -45,9 +45,9 @@ struct ContactOptions {
   ContactParallelism parallel = ContactParallelism::None;
   int batch_size = 8; // pairs per batch: BatchedHybrid's fallback unit, Batches' work unit
   bool cull = true;
-  int newton_iterations = 4;      // penalty steps; one of penalty_iterations_supported()
-  double tolerance_ratio = 1e-4;  // hybrid distance tolerance / min(eps_a, eps_b)
-  PenaltyParameters penalty;      // scale-free penalty weight and regularisation
+  int newton_iterations = 4;     // penalty steps; one of penalty_iterations_supported()
+  double tolerance_ratio = 1e-4; // hybrid distance tolerance / min(eps_a, eps_b)
+  PenaltyParameters penalty;     // scale-free penalty weight and regularisation
 };
 
 struct TriangleContact {            // one triangle pair closer than eps_a + eps_b
@@ -58,8 +58,8 @@ struct TriangleContact {            // one triangle pair closer than eps_a + eps
   Eigen::Vector3d normal;           // unit, from a towards b; when intersecting the
                                     // minimum-overlap axis (triangle_intersection.h)
   bool intersecting;
-  double penetration_depth;         // intersecting only: translation of b along normal that
-                                    // separates the triangles; 0 otherwise
+  double penetration_depth; // intersecting only: translation of b along normal that
+                            // separates the triangles; 0 otherwise
 };
 
 struct ContactStats { // values for one or more calls, summed by the caller; no globals

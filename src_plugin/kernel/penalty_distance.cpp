@@ -33,10 +33,9 @@ TRI_LANE void penalty_lane(const double (*c)[kPairLanes], int l, double weight, 
     r0[k] = a0[k] - b0[k];
   }
   // J^T J and J^T r0; r(z) = r0 + J z.
-  const double g00 = dot3(col[0], col[0]), g01 = dot3(col[0], col[1]),
-               g02 = dot3(col[0], col[2]), g03 = dot3(col[0], col[3]);
-  const double g11 = dot3(col[1], col[1]), g12 = dot3(col[1], col[2]),
-               g13 = dot3(col[1], col[3]);
+  const double g00 = dot3(col[0], col[0]), g01 = dot3(col[0], col[1]), g02 = dot3(col[0], col[2]),
+               g03 = dot3(col[0], col[3]);
+  const double g11 = dot3(col[1], col[1]), g12 = dot3(col[1], col[2]), g13 = dot3(col[1], col[3]);
   const double g22 = dot3(col[2], col[2]), g23 = dot3(col[2], col[3]);
   const double g33 = dot3(col[3], col[3]);
   const double q0 = dot3(col[0], r0), q1 = dot3(col[1], r0), q2 = dot3(col[2], r0),
@@ -114,8 +113,8 @@ TRI_LANE void bounds_lane(const double (*c)[kPairLanes], int l, PenaltyBlockResu
 #pragma GCC unroll 3
   for (int v = 0; v < 3; ++v) {
     a_hi = std::max(a_hi, n[0] * c[3 * v][l] + n[1] * c[3 * v + 1][l] + n[2] * c[3 * v + 2][l]);
-    b_lo = std::min(b_lo,
-                    n[0] * c[9 + 3 * v][l] + n[1] * c[10 + 3 * v][l] + n[2] * c[11 + 3 * v][l]);
+    b_lo =
+        std::min(b_lo, n[0] * c[9 + 3 * v][l] + n[1] * c[10 + 3 * v][l] + n[2] * c[11 + 3 * v][l]);
   }
   out.lower[l] = b_lo - a_hi;
 }
@@ -143,11 +142,10 @@ void penalty_block(const TrianglePairBlock &block, const PenaltyParameters &para
     bounds_lane(block.c, l, out);
 }
 
-#define TRI_PENALTY_COUNTS(X)                                                                     \
-  X(1) X(2) X(3) X(4) X(5) X(6) X(7) X(8) X(10) X(12) X(16) X(24) X(32)
+#define TRI_PENALTY_COUNTS(X) X(1) X(2) X(3) X(4) X(5) X(6) X(7) X(8) X(10) X(12) X(16) X(24) X(32)
 
-#define TRI_INSTANTIATE(N)                                                                        \
-  template void penalty_block<N>(const TrianglePairBlock &, const PenaltyParameters &, double,   \
+#define TRI_INSTANTIATE(N)                                                                         \
+  template void penalty_block<N>(const TrianglePairBlock &, const PenaltyParameters &, double,     \
                                  PenaltyBlockResult &);
 TRI_PENALTY_COUNTS(TRI_INSTANTIATE)
 #undef TRI_INSTANTIATE
@@ -163,11 +161,10 @@ bool penalty_iterations_supported(int iterations) {
 #undef TRI_CASE
 }
 
-void penalty_block(int iterations, const TrianglePairBlock &block,
-                   const PenaltyParameters &params, double step_tolerance,
-                   PenaltyBlockResult &out) {
-#define TRI_CASE(N)                                                                               \
-  case N:                                                                                         \
+void penalty_block(int iterations, const TrianglePairBlock &block, const PenaltyParameters &params,
+                   double step_tolerance, PenaltyBlockResult &out) {
+#define TRI_CASE(N)                                                                                \
+  case N:                                                                                          \
     return penalty_block<N>(block, params, step_tolerance, out);
   switch (iterations) {
     TRI_PENALTY_COUNTS(TRI_CASE)

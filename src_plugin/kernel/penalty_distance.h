@@ -44,12 +44,12 @@ struct PenaltyParameters {
 
 // Per-lane output of penalty_block; lengths in the input unit.
 struct alignas(64) PenaltyBlockResult {
-  double upper[kPairLanes];                 // |q - p|, see above
-  double lower[kPairLanes];                 // separation along n, see above
-  double point_a[3][kPairLanes];            // p (x, y, z)
-  double point_b[3][kPairLanes];            // q
-  int converged_at[kPairLanes];             // first iteration whose step s |dz|_2 was below
-                                            // the step tolerance; 0 if none was
+  double upper[kPairLanes];      // |q - p|, see above
+  double lower[kPairLanes];      // separation along n, see above
+  double point_a[3][kPairLanes]; // p (x, y, z)
+  double point_b[3][kPairLanes]; // q
+  int converged_at[kPairLanes];  // first iteration whose step s |dz|_2 was below
+                                 // the step tolerance; 0 if none was
 };
 
 // Runs `Iterations` steps on every lane of `block`. `step_tolerance` (length) only feeds
@@ -63,9 +63,8 @@ bool penalty_iterations_supported(int iterations);
 constexpr int kMaxPenaltyIterations = 32;
 
 // Run-time choice among the instantiated counts; throws std::invalid_argument otherwise.
-void penalty_block(int iterations, const TrianglePairBlock &block,
-                   const PenaltyParameters &params, double step_tolerance,
-                   PenaltyBlockResult &out);
+void penalty_block(int iterations, const TrianglePairBlock &block, const PenaltyParameters &params,
+                   double step_tolerance, PenaltyBlockResult &out);
 
 // Floating-point operations per pair, counted by hand from penalty_distance.cpp (FMA = 2),
 // for the benchmark's GFLOP/s estimate only.

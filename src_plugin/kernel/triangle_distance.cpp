@@ -75,9 +75,10 @@ namespace {
 // arrays that GCC cannot vectorise); after inlining they are plain scalars again.
 TRI_INLINE void brute_force_lane(const double (*c)[kPairLanes], int l, double *dist2,
                                  double (*pa)[kPairLanes], double (*pb)[kPairLanes], int *exact) {
-  const P3 ta[3] = {{c[0][l], c[1][l], c[2][l]}, {c[3][l], c[4][l], c[5][l]},
-                    {c[6][l], c[7][l], c[8][l]}};
-  const P3 tb[3] = {{c[9][l], c[10][l], c[11][l]}, {c[12][l], c[13][l], c[14][l]},
+  const P3 ta[3] = {
+      {c[0][l], c[1][l], c[2][l]}, {c[3][l], c[4][l], c[5][l]}, {c[6][l], c[7][l], c[8][l]}};
+  const P3 tb[3] = {{c[9][l], c[10][l], c[11][l]},
+                    {c[12][l], c[13][l], c[14][l]},
                     {c[15][l], c[16][l], c[17][l]}};
   const geom::Face fa = geom::face_of(ta), fb = geom::face_of(tb);
   const geom::CheckResult best = geom::fifteen_checks(ta, tb, fa, fb);

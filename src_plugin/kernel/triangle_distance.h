@@ -30,11 +30,11 @@ namespace tri {
 constexpr double kTouchRatio = 1e-12;
 
 struct TrianglePairDistance {
-  double distance = 0.0;             // >= 0, length unit of the input
-  Eigen::Vector3d point_a, point_b;  // closest points on a and on b
-  Eigen::Vector3d normal;            // unit, from a towards b
-  bool intersecting = false;         // the closed triangles share a point
-  double penetration_depth = 0.0;    // intersecting only: separating translation along normal
+  double distance = 0.0;            // >= 0, length unit of the input
+  Eigen::Vector3d point_a, point_b; // closest points on a and on b
+  Eigen::Vector3d normal;           // unit, from a towards b
+  bool intersecting = false;        // the closed triangles share a point
+  double penetration_depth = 0.0;   // intersecting only: separating translation along normal
 };
 
 // Scalar reference: one pair, with branches.

@@ -46,8 +46,8 @@ SeparatingAxis min_overlap_axis(const Eigen::Vector3d a[3], const Eigen::Vector3
     }
     const double move_plus = a_hi - b_lo;  // translate b along +n by this to separate
     const double move_minus = b_hi - a_lo; // translate b along -n by this to separate
-    const bool plus = move_plus < move_minus ||
-                      (move_plus == move_minus && n.dot(centroid_step) >= 0.0);
+    const bool plus =
+        move_plus < move_minus || (move_plus == move_minus && n.dot(centroid_step) >= 0.0);
     const double depth = plus ? move_plus : move_minus;
     if (depth < best.depth)
       best = {plus ? n : Eigen::Vector3d(-n), depth};

@@ -82,8 +82,8 @@ TEST(ParticleContacts, EveryKernelFindsTheBruteForceContacts) {
     ref_opt.kernel = DistanceKernel::BruteForceScalar;
     ref_opt.cull = false;
     const auto ref = contacts(s, ref_opt);
-    for (auto kernel : {DistanceKernel::BruteForce, DistanceKernel::Hybrid,
-                        DistanceKernel::BatchedHybrid})
+    for (auto kernel :
+         {DistanceKernel::BruteForce, DistanceKernel::Hybrid, DistanceKernel::BatchedHybrid})
       for (bool cull : {false, true})
         for (int iterations : {4, 6, 8}) {
           ContactOptions opt;
@@ -154,8 +154,8 @@ TEST(ParticleContacts, CullingNeverDropsAContactAndCountsAddUp) {
   std::mt19937_64 rng(61);
   for (int trial = 0; trial < 40; ++trial) {
     const double eps = uniform(rng, 0.02, 0.1) * 1e-3;
-    const Scene s = make_scene(trial % 2 ? 40 : 20, 4e-3, eps, uniform(rng, -2, 2) * eps,
-                               500 + trial);
+    const Scene s =
+        make_scene(trial % 2 ? 40 : 20, 4e-3, eps, uniform(rng, -2, 2) * eps, 500 + trial);
     ContactOptions opt;
     opt.kernel = DistanceKernel::BruteForce;
     opt.cull = false;

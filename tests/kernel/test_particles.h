@@ -54,8 +54,7 @@ inline tri::TriangleMesh test_particle(int ntri, double size, std::uint64_t seed
   const Eigen::Matrix3d axes = random_rotation(rng);
   const Eigen::Vector3d stretch(uniform(rng, 0.8, 1.2), uniform(rng, 0.8, 1.2),
                                 uniform(rng, 0.8, 1.2));
-  const Eigen::Matrix3d map = random_rotation(rng) * axes * stretch.asDiagonal() *
-                              axes.transpose();
+  const Eigen::Matrix3d map = random_rotation(rng) * axes * stretch.asDiagonal() * axes.transpose();
   double radius = 0.0;
   for (auto &v : mesh.vertices) {
     v = map * v;
@@ -73,8 +72,7 @@ inline double particle_distance(const tri::TriangleSoA &a, const tri::TriangleSo
     for (int j = 0; j < b.num_triangles(); ++j)
       pairs.push_back({i, j});
   std::vector<tri::TrianglePairDistance> d(pairs.size());
-  tri::brute_force_scalar_distances(a, b, pairs.data(), static_cast<int>(pairs.size()),
-                                    d.data());
+  tri::brute_force_scalar_distances(a, b, pairs.data(), static_cast<int>(pairs.size()), d.data());
   double m = INFINITY;
   for (const auto &r : d)
     m = std::min(m, r.distance);

@@ -17,8 +17,8 @@ std::vector<TriangleCase> random_cases(int n, double scale, std::uint64_t seed) 
   for (int k = 0; k < n; ++k) {
     TriangleCase c;
     c.name = "random " + std::to_string(k);
-    const V offset = V(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)) *
-                     uniform(rng, 0, 2);
+    const V offset =
+        V(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)) * uniform(rng, 0, 2);
     for (int v = 0; v < 3; ++v) {
       c.a[v] = scale * V(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1));
       c.b[v] = scale * (V(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)) + offset);

@@ -28,39 +28,86 @@ inline std::vector<TriangleCase> unit_cases(double d) {
   const bool touch = d == 0.0;
   const std::string tag = touch ? " touching" : " d=" + std::to_string(d);
   const V f0(0, 0, 0), f1(1, 0, 0), f2(0, 1, 0); // base triangle in z = 0
-  c.push_back({"parallel faces" + tag, {f0, f1, f2}, {f0 + V(0.2, 0.1, d), f1 + V(0.2, 0.1, d),
-               f2 + V(0.2, 0.1, d)}, d, touch});
-  c.push_back({"antiparallel faces" + tag, {f0, f1, f2}, {V(0.6, 0.3, d), V(0.1, 0.2, d),
-               V(0.3, 0.6, d)}, d, touch});
-  c.push_back({"parallel edges" + tag, {V(0, 0, 0), V(1, 0, 0), V(0.5, -1, 0)},
-               {V(0.3, 0, d), V(1.5, 0, d), V(0.8, 0, d + 1)}, d, touch});
-  c.push_back({"collinear edges" + tag, {V(0, 0, 0), V(1, 0, 0), V(0.5, -1, 0)},
-               {V(1 + d, 0, 0), V(2 + d, 0, 0), V(1.5 + d, 1, 0.3)}, d, touch});
-  c.push_back({"coplanar disjoint" + tag, {f0, f1, f2},
-               {V(1 + d, 0, 0), V(2 + d, 0, 0), V(1 + d, 1, 0)}, d, touch});
-  c.push_back({"vertex on face" + tag, {f0, f1, f2},
-               {V(0.25, 0.25, d), V(0.3, 0.2, 1), V(0.2, 0.3, 1)}, d, touch});
-  c.push_back({"face on vertex" + tag, {V(0.25, 0.25, -d), V(0.3, 0.2, -1), V(0.2, 0.3, -1)},
-               {f0, f1, f2}, d, touch});
-  c.push_back({"edge on edge" + tag, {f0, f1, f2},
-               {V(0.5, -0.5, d), V(0.5, 0.5, d + 0.0), V(0.5, 0, d + 1)}, d, touch});
-  c.push_back({"edge over edge skew" + tag, {V(0, 0, 0), V(1, 0, 0), V(0.5, -1, -1)},
-               {V(0.4, -0.5, d), V(0.6, 0.5, d), V(0.5, 0, d + 1)}, d, touch});
-  c.push_back({"vertex on vertex" + tag, {f0, f1, f2},
+  c.push_back({"parallel faces" + tag,
+               {f0, f1, f2},
+               {f0 + V(0.2, 0.1, d), f1 + V(0.2, 0.1, d), f2 + V(0.2, 0.1, d)},
+               d,
+               touch});
+  c.push_back({"antiparallel faces" + tag,
+               {f0, f1, f2},
+               {V(0.6, 0.3, d), V(0.1, 0.2, d), V(0.3, 0.6, d)},
+               d,
+               touch});
+  c.push_back({"parallel edges" + tag,
+               {V(0, 0, 0), V(1, 0, 0), V(0.5, -1, 0)},
+               {V(0.3, 0, d), V(1.5, 0, d), V(0.8, 0, d + 1)},
+               d,
+               touch});
+  c.push_back({"collinear edges" + tag,
+               {V(0, 0, 0), V(1, 0, 0), V(0.5, -1, 0)},
+               {V(1 + d, 0, 0), V(2 + d, 0, 0), V(1.5 + d, 1, 0.3)},
+               d,
+               touch});
+  c.push_back({"coplanar disjoint" + tag,
+               {f0, f1, f2},
+               {V(1 + d, 0, 0), V(2 + d, 0, 0), V(1 + d, 1, 0)},
+               d,
+               touch});
+  c.push_back({"vertex on face" + tag,
+               {f0, f1, f2},
+               {V(0.25, 0.25, d), V(0.3, 0.2, 1), V(0.2, 0.3, 1)},
+               d,
+               touch});
+  c.push_back({"face on vertex" + tag,
+               {V(0.25, 0.25, -d), V(0.3, 0.2, -1), V(0.2, 0.3, -1)},
+               {f0, f1, f2},
+               d,
+               touch});
+  c.push_back({"edge on edge" + tag,
+               {f0, f1, f2},
+               {V(0.5, -0.5, d), V(0.5, 0.5, d + 0.0), V(0.5, 0, d + 1)},
+               d,
+               touch});
+  c.push_back({"edge over edge skew" + tag,
+               {V(0, 0, 0), V(1, 0, 0), V(0.5, -1, -1)},
+               {V(0.4, -0.5, d), V(0.6, 0.5, d), V(0.5, 0, d + 1)},
+               d,
+               touch});
+  c.push_back({"vertex on vertex" + tag,
+               {f0, f1, f2},
                {V(0, 0, 0) - d * V(1, 1, 1).normalized(), V(-1, -0.2, -0.3), V(-0.2, -1, -0.4)},
-               d, touch});
-  c.push_back({"edge on face" + tag, {f0, f1, f2},
-               {V(0.1, 0.2, d), V(0.6, 0.3, d), V(0.3, 0.3, 1)}, d, touch});
-  c.push_back({"sliver over face" + tag, {f0, f1, f2},
-               {V(0.1, 0.2, d), V(0.7, 0.2, d), V(0.4, 0.2 + 1e-11, d)}, d, touch});
-  c.push_back({"sliver across edge" + tag, {V(0, 0, 0), V(1, 0, 0), V(0.5, 1e-10, 0)},
-               {V(0.5, -0.5, d), V(0.5, 0.5, d), V(0.5, 0, 1)}, d, touch});
-  c.push_back({"collinear triangle" + tag, {V(0, 0, 0), V(1, 0, 0), V(0.5, 0, 0)},
-               {V(0.5, -0.5, d), V(0.5, 0.5, d), V(0.5, 0, 1)}, d, touch});
-  c.push_back({"point triangle" + tag, {V(0.3, 0.3, -d), V(0.3, 0.3, -d), V(0.3, 0.3, -d)},
-               {f0, f1, f2}, d, touch});
-  c.push_back({"near-parallel edges" + tag, {V(0, 0, 0), V(1, 0, 0), V(0.5, -1, 0)},
-               {V(0.2, 0, d), V(0.8, 1e-9, d), V(0.5, 0, d + 1)}, d, touch});
+               d,
+               touch});
+  c.push_back({"edge on face" + tag,
+               {f0, f1, f2},
+               {V(0.1, 0.2, d), V(0.6, 0.3, d), V(0.3, 0.3, 1)},
+               d,
+               touch});
+  c.push_back({"sliver over face" + tag,
+               {f0, f1, f2},
+               {V(0.1, 0.2, d), V(0.7, 0.2, d), V(0.4, 0.2 + 1e-11, d)},
+               d,
+               touch});
+  c.push_back({"sliver across edge" + tag,
+               {V(0, 0, 0), V(1, 0, 0), V(0.5, 1e-10, 0)},
+               {V(0.5, -0.5, d), V(0.5, 0.5, d), V(0.5, 0, 1)},
+               d,
+               touch});
+  c.push_back({"collinear triangle" + tag,
+               {V(0, 0, 0), V(1, 0, 0), V(0.5, 0, 0)},
+               {V(0.5, -0.5, d), V(0.5, 0.5, d), V(0.5, 0, 1)},
+               d,
+               touch});
+  c.push_back({"point triangle" + tag,
+               {V(0.3, 0.3, -d), V(0.3, 0.3, -d), V(0.3, 0.3, -d)},
+               {f0, f1, f2},
+               d,
+               touch});
+  c.push_back({"near-parallel edges" + tag,
+               {V(0, 0, 0), V(1, 0, 0), V(0.5, -1, 0)},
+               {V(0.2, 0, d), V(0.8, 1e-9, d), V(0.5, 0, d + 1)},
+               d,
+               touch});
   return c;
 }
 
@@ -70,16 +117,28 @@ inline std::vector<TriangleCase> crossing_cases() {
   const V f0(0, 0, 0), f1(1, 0, 0), f2(0, 1, 0);
   return {
       {"edge through face", {f0, f1, f2}, {V(0.2, 0.2, -1), V(0.3, 0.3, 1), V(2, 2, 0.1)}, 0, true},
-      {"crossing faces", {f0, f1, f2}, {V(0.2, -0.5, -0.5), V(0.2, 0.5, 0.5), V(0.3, 0.6, -0.5)},
-       0, true},
-      {"face through face", {V(-1, -1, 0), V(2, -1, 0), V(-1, 2, 0)},
-       {V(0.2, 0.2, -0.5), V(0.4, 0.2, 0.5), V(0.3, 0.4, 0.5)}, 0, true},
-      {"coplanar overlapping", {f0, f1, f2}, {V(0.2, 0.2, 0), V(1.2, 0.2, 0), V(0.2, 1.2, 0)}, 0,
+      {"crossing faces",
+       {f0, f1, f2},
+       {V(0.2, -0.5, -0.5), V(0.2, 0.5, 0.5), V(0.3, 0.6, -0.5)},
+       0,
+       true},
+      {"face through face",
+       {V(-1, -1, 0), V(2, -1, 0), V(-1, 2, 0)},
+       {V(0.2, 0.2, -0.5), V(0.4, 0.2, 0.5), V(0.3, 0.4, 0.5)},
+       0,
+       true},
+      {"coplanar overlapping",
+       {f0, f1, f2},
+       {V(0.2, 0.2, 0), V(1.2, 0.2, 0), V(0.2, 1.2, 0)},
+       0,
        true},
       {"coplanar contained", {V(-1, -1, 0), V(3, -1, 0), V(-1, 3, 0)}, {f0, f1, f2}, 0, true},
       {"identical", {f0, f1, f2}, {f0, f1, f2}, 0, true},
-      {"slightly penetrating faces", {f0, f1, f2},
-       {V(0.2, 0.1, -1e-3), V(0.7, 0.1, 1e-3), V(0.2, 0.6, -1e-3)}, 0, true},
+      {"slightly penetrating faces",
+       {f0, f1, f2},
+       {V(0.2, 0.1, -1e-3), V(0.7, 0.1, 1e-3), V(0.2, 0.6, -1e-3)},
+       0,
+       true},
   };
 }
 

@@ -49,8 +49,7 @@ TEST(TriangleDistance, MatchesFclOnAMillionRandomPairs) {
   double worst = 0.0;
   for (int k = 0; k < n; ++k) {
     Eigen::Vector3d a[3], b[3];
-    const Eigen::Vector3d offset(uniform(rng, -1, 1), uniform(rng, -1, 1),
-                                 uniform(rng, -1, 1));
+    const Eigen::Vector3d offset(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1));
     for (int v = 0; v < 3; ++v) {
       a[v] = {uniform(rng, 0, 1), uniform(rng, 0, 1), uniform(rng, 0, 1)};
       b[v] = Eigen::Vector3d(uniform(rng, 0, 1), uniform(rng, 0, 1), uniform(rng, 0, 1)) + offset;
@@ -103,8 +102,7 @@ TEST_P(TriangleDistanceAtScale, KnownDistancesOfAdversarialSets) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Scales, TriangleDistanceAtScale,
-                         ::testing::Values(1e-6, 1e-3, 1.0, 1e3));
+INSTANTIATE_TEST_SUITE_P(Scales, TriangleDistanceAtScale, ::testing::Values(1e-6, 1e-3, 1.0, 1e3));
 
 TEST(TriangleDistance, SymmetricInItsArguments) {
   for (const auto &c : adversarial_cases(1e-3, 13)) {

@@ -200,8 +200,7 @@ int main(int argc, char **argv) {
         figures[std::to_string(ntri) + v.name + (cull ? " cull" : "")] = f;
         std::printf("%-22s %-5s %12.2f %12.2f %9.2f %9.2f%% %12.1f\n", v.name.c_str(),
                     cull ? "yes" : "no", f.us_per_particle_pair, f.mpairs_per_s, f.gflops,
-                    100 * f.fallback_rate,
-                    double(f.stats.triangle_pairs_tested) / scenes.size());
+                    100 * f.fallback_rate, double(f.stats.triangle_pairs_tested) / scenes.size());
         if (throughput_csv)
           throughput_csv << ntri << ',' << v.name << ',' << cull << ',' << f.us_per_particle_pair
                          << ',' << f.mpairs_per_s << ',' << f.gflops << ',' << f.fallback_rate
@@ -241,8 +240,8 @@ int main(int argc, char **argv) {
 
   // Fallback rate against the iteration count.
   std::printf("\n== Hybrid fallback rate and time against Newton iterations, 40 triangles, "
-              "one thread\n%-10s %14s %14s %14s %14s\n", "iterations", "fallback", "us (no cull)",
-              "fallback cull", "us (cull)");
+              "one thread\n%-10s %14s %14s %14s %14s\n",
+              "iterations", "fallback", "us (no cull)", "fallback cull", "us (cull)");
   for (int it : {2, 3, 4, 5, 6, 8, 12}) {
     ContactOptions opt;
     opt.newton_iterations = it;
