@@ -14,6 +14,7 @@
 #include "error.h"
 #include "group.h"
 #include "memory.h"
+#include "modify.h"
 
 #include <algorithm>
 #include <cmath>
@@ -75,8 +76,11 @@ FixTriParticles::FixTriParticles(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, n
   for (const tri_liggghts::ShapeSpec &spec : opt.shapes) {
     try {
       shapes_.push_back(build_shape(spec));
-    } catch (const std::exception &e) {
-      const std::string msg = "Fix tri/particles: shape " + spec.name + ": " + e.what();
+    } catch (const tri::ShapeError &e) { // already names the shape (and the file)
+      const std::string msg = std::string("Fix tri/particles: ") + e.what();
+      error->all(FLERR, msg.c_str());
+    } catch (const std::exception &e) { // a mesh file error names the file
+      const std::string msg = "Fix tri/particles: shape '" + spec.name + "': " + e.what();
       error->all(FLERR, msg.c_str());
     }
   }
