@@ -4,13 +4,17 @@
 
 #include "private_map_access.h"
 
+#include "fix_tri_contact_history.h"
 #include "fix_tri_nve.h"
 #include "fix_tri_particles.h"
 #include "fix_tri_vtk.h"
+#include "pair_tri_gran.h"
 
 #include "force.h"
 #include "lammps.h"
 #include "modify.h"
+
+#include <string>
 
 namespace tri_driver {
 namespace {
@@ -18,6 +22,16 @@ namespace {
 template <typename T> LAMMPS_NS::Fix *make_fix(LAMMPS_NS::LAMMPS *lmp, int narg, char **arg) {
   return new T(lmp, narg, arg);
 }
+template <typename T> LAMMPS_NS::Pair *make_pair(LAMMPS_NS::LAMMPS *lmp) { return new T(lmp); }
+
+struct PairRow {
+  const char *name;
+  LAMMPS_NS::Pair *(*create)(LAMMPS_NS::LAMMPS *);
+};
+
+const PairRow pair_table[] = {
+    {"tri/gran", &make_pair<LAMMPS_NS::PairTriGran>},
+};
 
 struct FixRow {
   const char *name;
@@ -28,11 +42,15 @@ const FixRow fix_table[] = {
     {"tri/particles", &make_fix<LAMMPS_NS::FixTriParticles>},
     {"tri/nve", &make_fix<LAMMPS_NS::FixTriNVE>},
     {"tri/vtk", &make_fix<LAMMPS_NS::FixTriVTK>},
+    // Replaces LIGGGHTS's own: same behaviour for pair gran, and it also serves tri/gran.
+    {"contacthistory", &make_fix<LAMMPS_NS::FixTriContactHistory>},
 };
 
 } // namespace
 
 void register_styles(LAMMPS_NS::LAMMPS &lmp) {
+  for (const PairRow &row : pair_table)
+    (*lmp.force->pair_map)[row.name] = row.create; // Force keeps this map public
   FixMap &fixes = fix_map(*lmp.modify);
   for (const FixRow &row : fix_table)
     fixes[row.name] = row.create;
@@ -40,8 +58,11 @@ void register_styles(LAMMPS_NS::LAMMPS &lmp) {
 
 std::vector<StyleName> registered_styles() {
   std::vector<StyleName> names;
+  for (const PairRow &row : pair_table)
+    names.push_back({"pair", row.name});
   for (const FixRow &row : fix_table)
-    names.push_back({"fix", row.name});
+    if (std::string(row.name) != "contacthistory") // internal, not a user style
+      names.push_back({"fix", row.name});
   return names;
 }
 

@@ -37,6 +37,12 @@ constexpr double kHistoryMatchAngle = 0.7853981633974483;            // rad, 45 
 void match_history(const double *history, const ContactPoint *contacts, int n,
                    const Eigen::Vector3d &x_a, int slot_of_contact[kHistorySlots]);
 
+// Whether history value k changes sign when the host swaps the roles of a and b (LIGGGHTS
+// keeps a pair's history on both atoms under newton off and negates such values for the
+// partner): normals and shear displacements do; the lever, measured from the pair's
+// reference point (the midpoint of the two centres for two particles), does not.
+constexpr bool history_flips_sign(int k) { return k % kHistorySlotDoubles < 6; }
+
 // Slot accessors (s in [0, kHistorySlots)).
 inline bool slot_occupied(const double *history, int s) {
   const double *h = history + s * kHistorySlotDoubles;

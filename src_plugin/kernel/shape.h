@@ -31,6 +31,7 @@ struct Shape {
   Eigen::Vector3d inertia_per_density = Eigen::Vector3d::Zero();
   double bounding_radius = 0.0; // max vertex distance from the centre of mass, m
   double min_edge_length = 0.0; // shortest triangle edge, m
+  double max_edge_length = 0.0; // longest triangle edge, m (sets the contact-patch link length)
   bool convex = false;          // every vertex on or behind every face plane (kConvexityTolerance)
 };
 

@@ -50,9 +50,7 @@ void FixTriNVE::setup(int) {
     if (tri::angular_velocity(q, particles_->angular_momentum(i), inertia) == w_now)
       continue;
     particles_->set_angular_momentum(i, tri::angmom_from_omega(q, w_now, inertia));
-    const Eigen::Vector3d w = tri::angular_velocity(q, particles_->angular_momentum(i), inertia);
-    for (int k = 0; k < 3; ++k)
-      omega[i][k] = w[k];
+    sync_omega(i);
   }
 }
 
@@ -62,8 +60,15 @@ void FixTriNVE::kick_rotation(int i, double dt) {
                                           dt * Eigen::Vector3d(t[0], t[1], t[2]));
 }
 
+void FixTriNVE::sync_omega(int i) {
+  const Eigen::Vector3d w = tri::angular_velocity(
+      particles_->orientation(i), particles_->angular_momentum(i), particles_->principal_inertia(i));
+  for (int k = 0; k < 3; ++k)
+    atom->omega[i][k] = w[k];
+}
+
 void FixTriNVE::initial_integrate(int) {
-  double **x = atom->x, **v = atom->v, **f = atom->f, **omega = atom->omega;
+  double **x = atom->x, **v = atom->v, **f = atom->f;
   const double *rmass = atom->rmass;
   const int *mask = atom->mask;
   const int nlocal = atom->nlocal;
@@ -82,14 +87,12 @@ void FixTriNVE::initial_integrate(int) {
     tri::rotate_free(q, L, inertia, dtv_);
     particles_->set_orientation(i, q);
     particles_->set_angular_momentum(i, L);
-    const Eigen::Vector3d w = tri::angular_velocity(q, L, inertia);
-    for (int k = 0; k < 3; ++k)
-      omega[i][k] = w[k];
+    sync_omega(i);
   }
 }
 
 void FixTriNVE::final_integrate() {
-  double **v = atom->v, **f = atom->f, **omega = atom->omega;
+  double **v = atom->v, **f = atom->f;
   const double *rmass = atom->rmass;
   const int *mask = atom->mask;
   const int nlocal = atom->nlocal;
@@ -100,9 +103,6 @@ void FixTriNVE::final_integrate() {
     for (int k = 0; k < 3; ++k)
       v[i][k] += dtfm * f[i][k];
     kick_rotation(i, dtf_);
-    const Eigen::Vector3d w = tri::angular_velocity(
-        particles_->orientation(i), particles_->angular_momentum(i), particles_->principal_inertia(i));
-    for (int k = 0; k < 3; ++k)
-      omega[i][k] = w[k];
+    sync_omega(i);
   }
 }

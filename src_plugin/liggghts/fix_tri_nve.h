@@ -23,6 +23,7 @@ private:
   class FixTriParticles *particles_ = nullptr;
   double dtv_ = 0.0, dtf_ = 0.0;
   void kick_rotation(int i, double dt);
+  void sync_omega(int i); // omega := angular velocity implied by q and L
 };
 
 } // namespace LAMMPS_NS

@@ -1,0 +1,118 @@
+#include "contact_settings.h"
+
+#include "error.h"
+
+#include <cstdlib>
+#include <cstring>
+
+namespace tri_liggghts {
+namespace {
+
+[[noreturn]] void fail(LAMMPS_NS::Error *error, const std::string &style, const std::string &msg) {
+  const std::string text = style + ": " + msg;
+  error->all(FLERR, text.c_str());
+  std::abort();
+}
+
+bool on_off(const std::string &key, const char *value, LAMMPS_NS::Error *error,
+            const std::string &style) {
+  if (std::strcmp(value, "on") == 0 || std::strcmp(value, "yes") == 0)
+    return true;
+  if (std::strcmp(value, "off") == 0 || std::strcmp(value, "no") == 0)
+    return false;
+  fail(error, style, "'" + key + "' expects on or off, got '" + value + "'");
+}
+
+int positive_int(const std::string &key, const char *value, LAMMPS_NS::Error *error,
+                 const std::string &style) {
+  char *end = nullptr;
+  const long n = std::strtol(value, &end, 10);
+  if (*end != '\0' || n <= 0 || n > 1000000)
+    fail(error, style, "'" + key + "' expects a positive integer, got '" + value + "'");
+  return static_cast<int>(n);
+}
+
+} // namespace
+
+bool parse_contact_keyword(int narg, char **arg, int *i, ContactSettings &s,
+                           const std::string &style, LAMMPS_NS::Error *error) {
+  const std::string key = arg[*i];
+  static const char *known[] = {"kernel", "newton_iters", "batch", "parallel", "cull", "reduction",
+                                "tangential", "absolute_damping", "limitForce",
+                                "tangential_damping"};
+  bool is_known = false;
+  for (const char *k : known)
+    is_known = is_known || key == k;
+  if (!is_known)
+    return false;
+  if (*i + 1 >= narg)
+    fail(error, style, "missing value after '" + key + "'");
+  const char *value = arg[*i + 1];
+  const std::string v = value;
+  tri::ContactOptions &d = s.interaction.distance;
+  tri::ContactCoefficients &c = s.interaction.coefficients;
+
+  if (key == "kernel") {
+    if (v == "bf")
+      d.kernel = tri::DistanceKernel::BruteForce;
+    else if (v == "penalty")
+      d.kernel = tri::DistanceKernel::Penalty;
+    else if (v == "hybrid")
+      d.kernel = tri::DistanceKernel::Hybrid;
+    else if (v == "batched")
+      d.kernel = tri::DistanceKernel::BatchedHybrid;
+    else
+      fail(error, style, "'kernel' expects bf, penalty, hybrid or batched, got '" + v + "'");
+  } else if (key == "newton_iters") {
+    d.newton_iterations = positive_int(key, value, error, style);
+    if (!tri::penalty_iterations_supported(d.newton_iterations))
+      fail(error, style, "'newton_iters " + v + "' is not one of the compiled iteration counts "
+                         "(1-8, 10, 12, 16, 24, 32)");
+  } else if (key == "batch") {
+    d.batch_size = positive_int(key, value, error, style);
+  } else if (key == "parallel") {
+    if (v == "pairs") {
+      s.loop = PairLoop::particle_pairs;
+      d.parallel = tri::ContactParallelism::None;
+    } else if (v == "triangles") {
+      s.loop = PairLoop::inside_pair;
+      d.parallel = tri::ContactParallelism::TrianglePairs;
+    } else if (v == "batches") {
+      s.loop = PairLoop::inside_pair;
+      d.parallel = tri::ContactParallelism::Batches;
+    } else if (v == "none") {
+      s.loop = PairLoop::inside_pair;
+      d.parallel = tri::ContactParallelism::None;
+    } else {
+      fail(error, style, "'parallel' expects pairs, triangles, batches or none, got '" + v + "'");
+    }
+  } else if (key == "cull") {
+    d.cull = on_off(key, value, error, style);
+  } else if (key == "reduction") {
+    if (v == "clusters")
+      s.interaction.reduction = tri::ReductionMethod::clusters;
+    else if (v == "paper")
+      s.interaction.reduction = tri::ReductionMethod::paper_min_width;
+    else if (v == "none")
+      s.interaction.reduction = tri::ReductionMethod::none;
+    else
+      fail(error, style, "'reduction' expects clusters, paper or none, got '" + v + "'");
+  } else if (key == "tangential") {
+    if (v == "history")
+      c.tangential = tri::TangentialModel::history;
+    else if (v == "no_history")
+      c.tangential = tri::TangentialModel::no_history;
+    else
+      fail(error, style, "'tangential' expects history or no_history, got '" + v + "'");
+  } else if (key == "absolute_damping") {
+    c.absolute_damping = on_off(key, value, error, style);
+  } else if (key == "limitForce") {
+    c.limit_force = on_off(key, value, error, style);
+  } else if (key == "tangential_damping") {
+    c.tangential_damping = on_off(key, value, error, style);
+  }
+  *i += 2;
+  return true;
+}
+
+} // namespace tri_liggghts

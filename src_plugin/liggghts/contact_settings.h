@@ -1,0 +1,41 @@
+// Keywords shared by `pair_style tri/gran` and `fix tri/wall`, parsed in one place:
+//
+//   kernel bf|penalty|hybrid|batched   distance kernel (default hybrid)
+//   newton_iters N                     penalty iterations (default 4)
+//   batch N                            batch size of the batched kernel (default 8)
+//   parallel pairs|triangles|batches|none
+//                                      OpenMP over particle pairs (default), over the triangle
+//                                      pairs of one particle pair, over batches, or off
+//   cull yes|no                        bounding-box culling of triangle pairs (default yes)
+//   reduction clusters|paper|none      contact reduction (default clusters; see
+//                                      contact_reduction.h)
+//   tangential history|no_history      (default history)
+//   absolute_damping on|off            as LIGGGHTS hooke/stiffness (default off)
+//   limitForce on|off                  clamp attractive normal force (default on, as the paper)
+//   tangential_damping on|off          (default on)
+#pragma once
+
+#include "body_interaction.h"
+
+#include <string>
+
+namespace LAMMPS_NS {
+class Error;
+}
+
+namespace tri_liggghts {
+
+enum class PairLoop { particle_pairs, inside_pair };
+
+struct ContactSettings {
+  tri::InteractionSettings interaction; // coefficients: only the switches are set here
+  PairLoop loop = PairLoop::particle_pairs;
+};
+
+// Consumes the keywords it knows from arg[*i..narg), advancing *i; returns false at the first
+// word it does not know (the caller decides whether that is an error). Bad values are errors
+// naming `style` and the keyword.
+bool parse_contact_keyword(int narg, char **arg, int *i, ContactSettings &settings,
+                           const std::string &style, LAMMPS_NS::Error *error);
+
+} // namespace tri_liggghts
