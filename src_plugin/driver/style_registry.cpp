@@ -8,6 +8,7 @@
 #include "fix_tri_nve.h"
 #include "fix_tri_particles.h"
 #include "fix_tri_vtk.h"
+#include "fix_tri_wall.h"
 #include "pair_tri_gran.h"
 
 #include "force.h"
@@ -42,6 +43,7 @@ const FixRow fix_table[] = {
     {"tri/particles", &make_fix<LAMMPS_NS::FixTriParticles>},
     {"tri/nve", &make_fix<LAMMPS_NS::FixTriNVE>},
     {"tri/vtk", &make_fix<LAMMPS_NS::FixTriVTK>},
+    {"tri/wall", &make_fix<LAMMPS_NS::FixTriWall>},
     // Replaces LIGGGHTS's own: same behaviour for pair gran, and it also serves tri/gran.
     {"contacthistory", &make_fix<LAMMPS_NS::FixTriContactHistory>},
 };

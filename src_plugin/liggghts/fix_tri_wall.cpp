@@ -1,0 +1,273 @@
+#include "fix_tri_wall.h"
+
+#include "fix_tri_particles.h"
+
+#include "atom.h"
+#include "error.h"
+#include "fix_mesh_surface.h"
+#include "fix_neighlist_mesh.h"
+#include "memory.h"
+#include "modify.h"
+#include "neighbor.h"
+#include "tri_mesh.h"
+#include "update.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cstring>
+#include <limits>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+namespace {
+const char *kStyle = "Fix tri/wall";
+}
+
+FixTriWall::FixTriWall(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg) {
+  settings_.interaction.coefficients.limit_force = true; // repulsive only, as pair tri/gran
+  int i = 3;
+  while (i < narg) {
+    const std::string key = arg[i];
+    if (key == "mesh") {
+      ++i;
+      while (i < narg && modify->find_fix_id(arg[i]) != nullptr)
+        mesh_ids_.push_back(arg[i++]);
+      if (mesh_ids_.empty()) {
+        const std::string msg = std::string(kStyle) + ": 'mesh' must name at least one fix " +
+                                "mesh/surface, got '" + (i < narg ? arg[i] : "") + "'";
+        error->all(FLERR, msg.c_str());
+      }
+    } else if (key == "epsilon") {
+      if (i + 1 >= narg)
+        error->all(FLERR, "Fix tri/wall: missing value after 'epsilon'");
+      char *end = nullptr;
+      epsilon_ = std::strtod(arg[i + 1], &end);
+      if (*end != '\0' || !(epsilon_ > 0.0)) {
+        const std::string msg = std::string(kStyle) + ": 'epsilon' must be > 0, got '" +
+                                arg[i + 1] + "'";
+        error->all(FLERR, msg.c_str());
+      }
+      i += 2;
+    } else if (!tri_liggghts::parse_contact_keyword(narg, arg, &i, settings_, kStyle, error)) {
+      const std::string msg = std::string(kStyle) + ": unknown keyword '" + key + "'";
+      error->all(FLERR, msg.c_str());
+    }
+  }
+  if (mesh_ids_.empty())
+    error->all(FLERR, "Fix tri/wall needs 'mesh MESH_ID ...'");
+  for (const std::string &id : mesh_ids_) {
+    auto *mesh = dynamic_cast<FixMeshSurface *>(modify->find_fix_id(id.c_str()));
+    if (!mesh) {
+      const std::string msg = std::string(kStyle) + ": fix '" + id + "' is not a fix mesh/surface";
+      error->all(FLERR, msg.c_str());
+    }
+    meshes_.push_back(mesh);
+  }
+
+  values_per_atom_ = static_cast<int>(meshes_.size()) * tri::kHistoryDoubles;
+  restart_peratom = 1;
+  grow_arrays(atom->nmax);
+  for (int k = 0; k < atom->nmax; ++k)
+    std::fill(history_[k], history_[k] + values_per_atom_, 0.0);
+  atom->add_callback(0);
+  atom->add_callback(1);
+}
+
+FixTriWall::~FixTriWall() {
+  atom->delete_callback(id, 0);
+  atom->delete_callback(id, 1);
+  memory->destroy(history_);
+}
+
+int FixTriWall::setmask() { return POST_FORCE; }
+
+void FixTriWall::post_create() {
+  for (FixMeshSurface *mesh : meshes_)
+    mesh->createWallNeighList(groupbit);
+}
+
+void FixTriWall::init() {
+  particles_ = static_cast<FixTriParticles *>(modify->find_fix_style("tri/particles", 0));
+  if (!particles_)
+    error->all(FLERR, "Fix tri/wall requires fix tri/particles (define it before the run)");
+  if (epsilon_ < 0.0)
+    epsilon_ = particles_->epsilon();
+  // Material of (particle type, wall type): LIGGGHTS sizes the property tables by the
+  // largest type of atoms and meshes alike.
+  int ntypes = atom->ntypes;
+  for (FixMeshSurface *mesh : meshes_)
+    ntypes = std::max(ntypes, mesh->atomTypeWall());
+  materials_.load(lmp, ntypes, settings_.interaction.coefficients, "fix tri/wall");
+  // The mesh neighbour list finds triangles within radius (= bounding radius + particle
+  // epsilon) times LIGGGHTS's contact distance factor; widen it by the wall's layer.
+  double rmin = std::numeric_limits<double>::infinity();
+  for (int s = 0; s < particles_->num_shapes(); ++s)
+    rmin = std::min(rmin, particles_->shape(s).bounding_radius + particles_->epsilon());
+  neighbor->register_contact_dist_factor(1.0 + epsilon_ / rmin);
+}
+
+void FixTriWall::setup(int) { compute(false); }
+
+void FixTriWall::post_force(int) { compute(true); }
+
+void FixTriWall::collect_tasks() {
+  tasks_.clear();
+  const int nlocal = atom->nlocal;
+  const int *mask = atom->mask;
+  std::vector<std::vector<std::pair<int, int>>> near(nlocal); // atom -> (global id, local tri)
+  for (std::size_t m = 0; m < meshes_.size(); ++m) {
+    for (auto &v : near)
+      v.clear();
+    TriMesh *mesh = meshes_[m]->triMesh();
+    FixNeighlistMesh *list = meshes_[m]->meshNeighlist();
+    const int ntri = mesh->sizeLocal() + mesh->sizeGhost();
+    for (int t = 0; t < ntri; ++t)
+      for (int a : list->get_contact_list(t))
+        if (a < nlocal && (mask[a] & groupbit))
+          near[a].emplace_back(mesh->id(t), t);
+    for (int a = 0; a < nlocal; ++a) {
+      double *h = history_[a] + m * tri::kHistoryDoubles;
+      if (near[a].empty()) {
+        std::fill(h, h + tri::kHistoryDoubles, 0.0);
+        continue;
+      }
+      // Ordered by global triangle id, so the result does not depend on how the mesh is
+      // split between ranks.
+      std::sort(near[a].begin(), near[a].end());
+      Task task{a, static_cast<int>(m), {}};
+      for (const auto &p : near[a])
+        task.triangles.push_back(p.second);
+      tasks_.push_back(std::move(task));
+    }
+  }
+}
+
+void FixTriWall::interact(int k, int thread, double dt, bool update_history) {
+  const Task &task = tasks_[k];
+  const int a = task.atom;
+  FixMeshSurface *fix_mesh = meshes_[task.mesh];
+  TriMesh *mesh = fix_mesh->triMesh();
+
+  tri::TriangleSoA &patch = patches_[k];
+  patch.resize(static_cast<int>(task.triangles.size()));
+  auto *vnodes = mesh->prop().getElementProperty<MultiVectorContainer<double, 3, 3>>("v");
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero(), velocity = Eigen::Vector3d::Zero();
+  for (std::size_t t = 0; t < task.triangles.size(); ++t)
+    for (int c = 0; c < 3; ++c) {
+      double p[3];
+      mesh->node(task.triangles[t], c, p);
+      patch.set_vertex(static_cast<int>(t), c, Eigen::Vector3d(p[0], p[1], p[2]));
+      centroid += Eigen::Vector3d(p[0], p[1], p[2]);
+      if (vnodes) {
+        const double *v = vnodes->begin()[task.triangles[t]][c];
+        velocity += Eigen::Vector3d(v[0], v[1], v[2]);
+      }
+    }
+  const double corners = 3.0 * static_cast<double>(task.triangles.size());
+
+  const tri::Shape &shape = particles_->shape(particles_->shape_index(a));
+  tri::Body particle;
+  particle.triangles = &particles_->world_triangles(a);
+  particle.epsilon = particles_->epsilon();
+  particle.longest_edge = shape.max_edge_length;
+  particle.min_edge = shape.min_edge_length;
+  particle.state.x = Eigen::Vector3d(atom->x[a][0], atom->x[a][1], atom->x[a][2]);
+  particle.state.v = Eigen::Vector3d(atom->v[a][0], atom->v[a][1], atom->v[a][2]);
+  particle.state.omega = Eigen::Vector3d(atom->omega[a][0], atom->omega[a][1], atom->omega[a][2]);
+  particle.state.mass = atom->rmass[a];
+
+  // A wall is a body of infinite mass. Its velocity is the mean of the patch's node
+  // velocities (exact for a translating mesh; for a rotating one, the patch is a
+  // particle-sized neighbourhood, so the error is of order omega_wall * particle size).
+  tri::Body wall;
+  wall.triangles = &patch;
+  wall.epsilon = epsilon_;
+  wall.longest_edge = std::numeric_limits<double>::infinity();
+  wall.min_edge = shape.min_edge_length;
+  wall.state.x = centroid / corners;
+  wall.state.v = velocity / corners;
+  wall.state.mass = 0.0;
+
+  tri::InteractionSettings s = settings_.interaction;
+  s.coefficients = materials_.get(atom->type[a], fix_mesh->atomTypeWall());
+  double *history = history_[a] + task.mesh * tri::kHistoryDoubles;
+  double scratch_history[tri::kHistoryDoubles];
+  if (!update_history) { // setup: forces without advancing the history (restarts stay exact)
+    std::memcpy(scratch_history, history, sizeof(scratch_history));
+    history = scratch_history;
+  }
+  if (s.coefficients.tangential == tri::TangentialModel::no_history)
+    history = nullptr;
+  results_[k] = tri::body_interaction(particle, wall, s, dt, history, scratch_[thread],
+                                      thread_tally_[thread].distance);
+}
+
+void FixTriWall::compute(bool update_history) {
+  collect_tasks();
+  const long ntasks = static_cast<long>(tasks_.size());
+  results_.assign(tasks_.size(), tri::PairForceResult{});
+  if (patches_.size() < tasks_.size())
+    patches_.resize(tasks_.size());
+  const int nthreads =
+      settings_.loop == tri_liggghts::PairLoop::particle_pairs ? omp_get_max_threads() : 1;
+  if (static_cast<int>(scratch_.size()) < nthreads)
+    scratch_.resize(nthreads);
+  thread_tally_.assign(nthreads, tri::InteractionTally{});
+  const double dt = update->dt;
+#pragma omp parallel for schedule(dynamic, 4) num_threads(nthreads)
+  for (long k = 0; k < ntasks; ++k)
+    interact(static_cast<int>(k), omp_get_thread_num(), dt, update_history);
+
+  tally_ = tri::InteractionTally{};
+  for (const tri::InteractionTally &t : thread_tally_)
+    tally_.distance += t.distance;
+  double **f = atom->f, **torque = atom->torque;
+  for (long k = 0; k < ntasks; ++k) {
+    const tri::PairForceResult &r = results_[k];
+    tally_.add(r);
+    const int a = tasks_[k].atom;
+    for (int d = 0; d < 3; ++d) {
+      f[a][d] += r.force_a[d];
+      torque[a][d] += r.torque_a[d];
+    }
+  }
+}
+
+/* ---------------- per-atom wall history ---------------- */
+
+void FixTriWall::grow_arrays(int nmax) {
+  memory->grow(history_, nmax, std::max(values_per_atom_, 1), "tri/wall:history");
+}
+
+void FixTriWall::copy_arrays(int i, int j, int) {
+  std::memcpy(history_[j], history_[i], values_per_atom_ * sizeof(double));
+}
+
+int FixTriWall::pack_exchange(int i, double *buf) {
+  std::memcpy(buf, history_[i], values_per_atom_ * sizeof(double));
+  return values_per_atom_;
+}
+
+int FixTriWall::unpack_exchange(int nlocal, double *buf) {
+  std::memcpy(history_[nlocal], buf, values_per_atom_ * sizeof(double));
+  return values_per_atom_;
+}
+
+int FixTriWall::pack_restart(int i, double *buf) {
+  buf[0] = values_per_atom_ + 1;
+  std::memcpy(buf + 1, history_[i], values_per_atom_ * sizeof(double));
+  return values_per_atom_ + 1;
+}
+
+void FixTriWall::unpack_restart(int nlocal, int nth) {
+  double **extra = atom->extra;
+  int m = 0;
+  for (int k = 0; k < nth; ++k)
+    m += static_cast<int>(extra[nlocal][m]);
+  std::memcpy(history_[nlocal], &extra[nlocal][m + 1], values_per_atom_ * sizeof(double));
+}
+
+int FixTriWall::size_restart(int) { return values_per_atom_ + 1; }
+int FixTriWall::maxsize_restart() { return values_per_atom_ + 1; }

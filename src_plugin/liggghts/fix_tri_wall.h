@@ -1,0 +1,70 @@
+// fix tri/wall: contacts between triangulated particles and the triangles of one or more
+// LIGGGHTS `fix mesh/surface` meshes (static, or moved by `fix move/mesh`). Wall triangles
+// near a particle come from LIGGGHTS's own mesh neighbour list (`neighlist/mesh`, the one
+// `fix wall/gran` uses), so the cost grows with the particles near each wall triangle. The
+// particle's triangles and those wall triangles meet in tri::body_interaction, the same
+// kernel, reduction and force law as pair tri/gran; the wall material is the mesh's type.
+//
+//   fix ID group tri/wall mesh MESH_ID [MESH_ID ...] [epsilon E] [contact keywords]
+//
+// epsilon: the wall's soft layer (m), default the particles' epsilon. Contact keywords as
+// pair tri/gran (contact_settings.h). The tangential history of each (particle, mesh) pair is
+// a per-atom array of this fix: migrated with the atom and written to restarts.
+#pragma once
+
+#include "fix.h"
+
+#include "contact_settings.h"
+#include "material_table.h"
+
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class FixTriWall : public Fix {
+public:
+  FixTriWall(class LAMMPS *, int, char **);
+  ~FixTriWall() override;
+  int setmask() override;
+  void post_create() override;
+  void init() override;
+  void setup(int) override;
+  void post_force(int) override;
+
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int size_restart(int) override;
+  int maxsize_restart() override;
+
+  const tri::InteractionTally &tally() const { return tally_; }
+
+private:
+  struct Task {
+    int atom, mesh;
+    std::vector<int> triangles; // mesh-local indices, ordered by global triangle id
+  };
+  std::vector<class FixMeshSurface *> meshes_;
+  std::vector<std::string> mesh_ids_;
+  class FixTriParticles *particles_ = nullptr;
+  tri_liggghts::ContactSettings settings_;
+  tri_liggghts::MaterialTable materials_;
+  double epsilon_ = -1.0; // < 0: the particles' epsilon
+  double **history_ = nullptr; // per atom: meshes_.size() * kHistoryDoubles
+  int values_per_atom_ = 0;
+  std::vector<Task> tasks_;
+  std::vector<tri::PairForceResult> results_;
+  std::vector<tri::TriangleSoA> patches_;
+  std::vector<tri::InteractionScratch> scratch_;
+  std::vector<tri::InteractionTally> thread_tally_;
+  tri::InteractionTally tally_;
+
+  void compute(bool update_history);
+  void collect_tasks();
+  void interact(int k, int thread, double dt, bool update_history);
+};
+
+} // namespace LAMMPS_NS
