@@ -17,10 +17,7 @@ ContactStats &ContactStats::operator+=(const ContactStats &o) {
   triangle_pairs_tested += o.triangle_pairs_tested;
   triangle_pairs_culled += o.triangle_pairs_culled;
   contacts += o.contacts;
-  penalty_pairs += o.penalty_pairs;
-  fallbacks += o.fallbacks;
-  for (int k = 0; k <= kMaxPenaltyIterations; ++k)
-    newton_histogram[k] += o.newton_histogram[k];
+  add_penalty_counters(*this, o);
   return *this;
 }
 
@@ -148,10 +145,7 @@ void find_triangle_contacts(const TriangleSoA &a, double eps_a, const TriangleSo
     break;
   }
   }
-  stats.penalty_pairs += counters.penalty_pairs;
-  stats.fallbacks += counters.fallbacks;
-  for (int k = 0; k <= kMaxPenaltyIterations; ++k)
-    stats.newton_histogram[k] += counters.newton_histogram[k];
+  add_penalty_counters(stats, counters);
 
   for (int k = 0; k < count; ++k) {
     const TrianglePairDistance &r = results[k];

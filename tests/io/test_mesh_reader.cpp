@@ -1,6 +1,7 @@
 // read_mesh_file: the same shape written as ASCII STL, binary STL, OBJ and PLY (by the tiny
 // writers below, at run time, into a temporary directory) reads back with the same mass
 // properties; broken files give a MeshFileError that starts with the path and says what.
+#include "../kernel/test_meshes.h"
 #include "mesh_reader.h"
 #include "shape.h"
 
@@ -12,7 +13,6 @@
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
-#include <map>
 #include <string>
 #include <unistd.h>
 
@@ -20,40 +20,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Box [0,a] x [0,b] x [0,c] moved by `shift`; vertex i has x = a (i&1), y = b (i&2), z = c (i&4).
-tri::TriangleMesh box(double a, double b, double c, const Eigen::Vector3d &shift) {
-  tri::TriangleMesh m;
-  for (int i = 0; i < 8; ++i)
-    m.vertices.push_back(Eigen::Vector3d(a * (i & 1), b * ((i >> 1) & 1), c * ((i >> 2) & 1)) +
-                         shift);
-  m.triangles = {{0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}, {0, 1, 5}, {0, 5, 4},
-                 {2, 6, 7}, {2, 7, 3}, {0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}};
-  return m;
-}
+using tri_test::box;
 
 // Octahedron subdivided `level` times onto a sphere of radius r: a many-triangle test shape
 // whose coordinates are not representable exactly in float (as in real files).
 tri::TriangleMesh sphere(int level, double r) {
-  tri::TriangleMesh m;
-  m.vertices = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-  m.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
-                 {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
-  for (int l = 0; l < level; ++l) {
-    std::map<std::pair<int, int>, int> midpoint;
-    auto mid = [&](int a, int b) {
-      const auto key = std::minmax(a, b);
-      if (auto it = midpoint.find(key); it != midpoint.end())
-        return it->second;
-      m.vertices.push_back((m.vertices[a] + m.vertices[b]).normalized());
-      return midpoint[key] = m.num_vertices() - 1;
-    };
-    std::vector<std::array<int, 3>> finer;
-    for (const auto &t : m.triangles) {
-      const int ab = mid(t[0], t[1]), bc = mid(t[1], t[2]), ca = mid(t[2], t[0]);
-      finer.insert(finer.end(), {{t[0], ab, ca}, {t[1], bc, ab}, {t[2], ca, bc}, {ab, bc, ca}});
-    }
-    m.triangles = std::move(finer);
-  }
+  tri::TriangleMesh m = tri_test::octasphere(level);
   for (auto &v : m.vertices)
     v = r * v + Eigen::Vector3d(0.01, -0.02, 0.03);
   return m;
@@ -148,6 +120,14 @@ void write_text(const fs::path &path, const std::string &text) { std::ofstream(p
 
 void truncate_to(const fs::path &path, std::uintmax_t size) { fs::resize_file(path, size); }
 
+::testing::AssertionResult StartsWithPathAndSays(const std::string &message, const fs::path &path,
+                                                 const std::string &phrase) {
+  if (message.rfind(path.string() + ": ", 0) == 0 && message.find(phrase) != std::string::npos)
+    return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "message \"" << message << "\" should start with \""
+                                       << path.string() << ": \" and contain \"" << phrase << "\"";
+}
+
 class MeshReader : public ::testing::Test {
 protected:
   void SetUp() override {
@@ -158,6 +138,14 @@ protected:
   }
   void TearDown() override { fs::remove_all(dir_); }
   fs::path file(const std::string &name) const { return dir_ / name; }
+
+  // Writes `text` to file `name`, reads it, and checks the error as StartsWithPathAndSays.
+  ::testing::AssertionResult TextFileFailsWith(const std::string &name, const std::string &text,
+                                               const std::string &phrase) const {
+    const fs::path path = file(name);
+    write_text(path, text);
+    return StartsWithPathAndSays(read_error(path), path, phrase);
+  }
 
   // The MeshFileError message for reading `path` ("" if it reads), with a check that VTK
   // printed nothing.
@@ -179,14 +167,6 @@ protected:
   fs::path dir_;
 };
 
-::testing::AssertionResult StartsWithPathAndSays(const std::string &message, const fs::path &path,
-                                                 const std::string &phrase) {
-  if (message.rfind(path.string() + ": ", 0) == 0 && message.find(phrase) != std::string::npos)
-    return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "message \"" << message << "\" should start with \""
-                                       << path.string() << ": \" and contain \"" << phrase << "\"";
-}
-
 void expect_same_shape(const tri::Shape &read, const tri::Shape &original, double rel) {
   EXPECT_EQ(read.mesh.num_triangles(), original.mesh.num_triangles());
   EXPECT_EQ(read.mesh.num_vertices(), original.mesh.num_vertices()); // corners merged
@@ -198,7 +178,9 @@ void expect_same_shape(const tri::Shape &read, const tri::Shape &original, doubl
 
 TEST_F(MeshReader, AllFormatsGiveTheSameShape) {
   for (const auto &[name, mesh] :
-       {std::pair{std::string("box"), box(3, 1, 2, Eigen::Vector3d(5, -4, 3))},
+       {std::pair{std::string("box"),
+                  tri_test::transformed(box(3, 1, 2), Eigen::Matrix3d::Identity(),
+                                        Eigen::Vector3d(5, -4, 3))},
         std::pair{std::string("sphere"), sphere(3, 0.002)}}) {
     SCOPED_TRACE(name);
     const tri::Shape original = tri::make_shape(name, mesh);
@@ -219,13 +201,13 @@ TEST_F(MeshReader, AllFormatsGiveTheSameShape) {
 }
 
 TEST_F(MeshReader, ExtensionIsCaseInsensitive) {
-  write_binary_stl(file("BOX.STL"), box(1, 2, 3, Eigen::Vector3d::Zero()));
+  write_binary_stl(file("BOX.STL"), box(1, 2, 3));
   EXPECT_EQ(tri::read_mesh_file(file("BOX.STL").string()).num_triangles(), 12);
 }
 
 TEST_F(MeshReader, BinaryStlWhoseHeaderSaysSolid) {
   // Some CAD exporters start the binary header with "solid"; the size identifies it.
-  const tri::TriangleMesh mesh = box(3, 1, 2, Eigen::Vector3d::Zero());
+  const tri::TriangleMesh mesh = box(3, 1, 2);
   write_binary_stl(file("solid.stl"), mesh, "solid exported by some CAD tool");
   const tri::Shape s = tri::make_shape("s", tri::read_mesh_file(file("solid.stl").string()));
   EXPECT_NEAR(s.volume, 6.0, 1e-12);
@@ -243,7 +225,7 @@ TEST_F(MeshReader, QuadFacesAreTriangulated) {
 
 TEST_F(MeshReader, TruncatedBinaryStl) {
   const fs::path path = file("cut.stl");
-  write_binary_stl(path, box(3, 1, 2, Eigen::Vector3d::Zero()));
+  write_binary_stl(path, box(3, 1, 2));
   truncate_to(path, 84 + 50 * 12 - 20);
   EXPECT_TRUE(StartsWithPathAndSays(read_error(path), path,
                                     "binary STL is truncated or malformed: its header announces "
@@ -252,7 +234,7 @@ TEST_F(MeshReader, TruncatedBinaryStl) {
 
 TEST_F(MeshReader, TruncatedBinaryStlWhoseHeaderSaysSolid) {
   const fs::path path = file("cut_solid.stl");
-  write_binary_stl(path, box(3, 1, 2, Eigen::Vector3d::Zero()), "solid but binary");
+  write_binary_stl(path, box(3, 1, 2), "solid but binary");
   truncate_to(path, 84 + 50 * 12 - 20);
   EXPECT_TRUE(StartsWithPathAndSays(read_error(path), path, "binary STL is truncated"));
 }
@@ -266,23 +248,18 @@ TEST_F(MeshReader, TruncatedAsciiStl) {
 
 TEST_F(MeshReader, MalformedAsciiStl) {
   // Complete on the outside, garbage inside: VTK's complaint becomes the exception.
-  const fs::path path = file("bad_ascii.stl");
-  write_text(path, "solid x\n  facet normal 0 0 0\n    outer loop\n      vertex 0 0 zero\n"
-                   "      vertex 1 0 0\n      vertex 0 1 0\n    endloop\n  endfacet\nendsolid x\n");
-  EXPECT_TRUE(StartsWithPathAndSays(read_error(path), path, "cannot read mesh file (STL)"));
+  EXPECT_TRUE(TextFileFailsWith(
+      "bad_ascii.stl",
+      "solid x\n  facet normal 0 0 0\n    outer loop\n      vertex 0 0 zero\n"
+      "      vertex 1 0 0\n      vertex 0 1 0\n    endloop\n  endfacet\nendsolid x\n",
+      "cannot read mesh file (STL)"));
 }
 
 TEST_F(MeshReader, GarbageContent) {
   const std::string garbage = "this is not a mesh at all\n\x01\x02\x03 just some bytes\n";
-  const fs::path stl = file("garbage.stl");
-  write_text(stl, garbage);
-  EXPECT_TRUE(StartsWithPathAndSays(read_error(stl), stl, "not an STL file"));
-  const fs::path obj = file("garbage.obj");
-  write_text(obj, garbage);
-  EXPECT_TRUE(StartsWithPathAndSays(read_error(obj), obj, "contains no triangles"));
-  const fs::path ply = file("garbage.ply");
-  write_text(ply, garbage);
-  EXPECT_TRUE(StartsWithPathAndSays(read_error(ply), ply, "not a PLY file"));
+  EXPECT_TRUE(TextFileFailsWith("garbage.stl", garbage, "not an STL file"));
+  EXPECT_TRUE(TextFileFailsWith("garbage.obj", garbage, "contains no triangles"));
+  EXPECT_TRUE(TextFileFailsWith("garbage.ply", garbage, "not a PLY file"));
 }
 
 TEST_F(MeshReader, TruncatedPly) {
@@ -303,31 +280,26 @@ TEST_F(MeshReader, TruncatedPly) {
 }
 
 TEST_F(MeshReader, PlyFaceWithMissingVertex) {
-  const fs::path path = file("dangling.ply");
-  write_text(path, "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-                   "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
-                   "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n");
-  EXPECT_TRUE(StartsWithPathAndSays(read_error(path), path,
-                                    "PLY file is malformed: face 0 refers to vertex 3, but there "
-                                    "are 3 vertices"));
+  EXPECT_TRUE(TextFileFailsWith(
+      "dangling.ply",
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+      "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n",
+      "PLY file is malformed: face 0 refers to vertex 3, but there are 3 vertices"));
 }
 
 TEST_F(MeshReader, ObjFaceWithMissingVertex) {
-  const fs::path path = file("dangling.obj");
-  write_text(path, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 9\n");
-  EXPECT_TRUE(StartsWithPathAndSays(read_error(path), path,
-                                    "mesh file is malformed: face 1 refers to vertex 9 (1-based), "
-                                    "but there are 3 vertices"));
+  EXPECT_TRUE(TextFileFailsWith("dangling.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 9\n",
+                                "mesh file is malformed: face 1 refers to vertex 9 (1-based), "
+                                "but there are 3 vertices"));
 }
 
 TEST_F(MeshReader, TruncatedObj) {
   // Cut inside a face line: VTK's complaint becomes the exception. (Cut at a line end, an
   // OBJ simply has fewer faces; make_shape then reports the hole.)
-  const fs::path path = file("cut.obj");
-  write_text(path, "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4");
-  EXPECT_TRUE(StartsWithPathAndSays(read_error(path), path,
-                                    "cannot read mesh file (OBJ): VTK reported: Error reading file "
-                                    "near line 8"));
+  EXPECT_TRUE(TextFileFailsWith(
+      "cut.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4",
+      "cannot read mesh file (OBJ): VTK reported: Error reading file near line 8"));
 }
 
 TEST_F(MeshReader, MissingFile) {
@@ -343,30 +315,22 @@ TEST_F(MeshReader, DirectoryIsNotAFile) {
 }
 
 TEST_F(MeshReader, UnknownExtension) {
-  const fs::path path = file("shape.xyz");
-  write_text(path, "1 2 3\n");
-  EXPECT_TRUE(StartsWithPathAndSays(
-      read_error(path), path, "unknown mesh file extension '.xyz' (expected .stl, .obj or .ply)"));
-  const fs::path none = file("shape");
-  write_text(none, "1 2 3\n");
-  EXPECT_TRUE(StartsWithPathAndSays(read_error(none), none, "unknown mesh file extension ''"));
+  EXPECT_TRUE(TextFileFailsWith(
+      "shape.xyz", "1 2 3\n", "unknown mesh file extension '.xyz' (expected .stl, .obj or .ply)"));
+  EXPECT_TRUE(TextFileFailsWith("shape", "1 2 3\n", "unknown mesh file extension ''"));
 }
 
 TEST_F(MeshReader, EmptyFileAndEmptyMesh) {
-  const fs::path empty = file("empty.obj");
-  write_text(empty, "");
-  EXPECT_TRUE(StartsWithPathAndSays(read_error(empty), empty, "mesh file is empty"));
-  const fs::path solid = file("nothing.stl");
-  write_text(solid, "solid nothing\nendsolid nothing\n");
-  EXPECT_TRUE(StartsWithPathAndSays(read_error(solid), solid, "mesh file contains no triangles"));
-  const fs::path points = file("points.obj");
-  write_text(points, "v 0 0 0\nv 1 0 0\nv 0 1 0\n");
-  EXPECT_TRUE(StartsWithPathAndSays(read_error(points), points, "mesh file contains no triangles"));
+  EXPECT_TRUE(TextFileFailsWith("empty.obj", "", "mesh file is empty"));
+  EXPECT_TRUE(TextFileFailsWith("nothing.stl", "solid nothing\nendsolid nothing\n",
+                                "mesh file contains no triangles"));
+  EXPECT_TRUE(TextFileFailsWith("points.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n",
+                                "mesh file contains no triangles"));
 }
 
 TEST_F(MeshReader, OpenMeshReadsButMakeShapeRejectsIt) {
   // Closedness is make_shape's job: the reader returns what is in the file.
-  tri::TriangleMesh m = box(1, 1, 1, Eigen::Vector3d::Zero());
+  tri::TriangleMesh m = box(1, 1, 1);
   m.triangles.pop_back();
   write_binary_stl(file("open.stl"), m);
   const tri::TriangleMesh read = tri::read_mesh_file(file("open.stl").string());

@@ -19,18 +19,8 @@ struct PairSet {
 
 PairSet make_set(double scale, std::uint64_t seed) {
   std::vector<TriangleCase> cases = adversarial_cases(scale, seed);
-  std::mt19937_64 rng(seed);
-  for (int k = 0; k < 3000; ++k) { // random pairs within a few triangle sizes
-    TriangleCase c;
-    c.name = "random " + std::to_string(k);
-    const V offset =
-        V(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)) * uniform(rng, 0, 2);
-    for (int v = 0; v < 3; ++v) {
-      c.a[v] = scale * V(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1));
-      c.b[v] = scale * (V(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)) + offset);
-    }
+  for (const auto &c : random_cases(3000, scale, seed)) // random pairs within a few triangle sizes
     cases.push_back(c);
-  }
   PairSet s;
   cases_to_soa(cases, s.a, s.b, s.pairs);
   for (const auto &c : cases)

@@ -1,83 +1,19 @@
 // Mass properties against closed forms: cube, box (translated and rotated), tetrahedron,
 // icosphere against the sphere (with the second-order discretisation error).
 #include "mass_properties.h"
+#include "test_meshes.h"
 
 #include <Eigen/Geometry>
 #include <cmath>
 #include <gtest/gtest.h>
-#include <map>
 
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// Box [0,a] x [0,b] x [0,c]; vertex i has x = a (i&1), y = b (i&2), z = c (i&4).
-tri::TriangleMesh box(double a, double b, double c) {
-  tri::TriangleMesh m;
-  for (int i = 0; i < 8; ++i)
-    m.vertices.emplace_back(a * (i & 1), b * ((i >> 1) & 1), c * ((i >> 2) & 1));
-  m.triangles = {{0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}, {0, 1, 5}, {0, 5, 4},
-                 {2, 6, 7}, {2, 7, 3}, {0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}};
-  return m;
-}
-
-// Icosahedron inscribed in the unit sphere, each face subdivided into 4^level triangles
-// whose new vertices are pushed onto the sphere.
-tri::TriangleMesh icosphere(int level) {
-  const double phi = (1.0 + std::sqrt(5.0)) / 2.0;
-  tri::TriangleMesh m;
-  for (int s1 : {-1, 1})
-    for (int s2 : {-1, 1}) {
-      m.vertices.emplace_back(0, s1, s2 * phi);
-      m.vertices.emplace_back(s1, s2 * phi, 0);
-      m.vertices.emplace_back(s2 * phi, 0, s1);
-    }
-  for (int i = 0; i < 12; ++i)
-    for (int j = i + 1; j < 12; ++j)
-      for (int k = j + 1; k < 12; ++k) {
-        auto edge = [&](int p, int q) {
-          return std::abs((m.vertices[p] - m.vertices[q]).norm() - 2.0) < 1e-9;
-        };
-        if (edge(i, j) && edge(j, k) && edge(i, k)) {
-          const Eigen::Vector3d n =
-              (m.vertices[j] - m.vertices[i]).cross(m.vertices[k] - m.vertices[i]);
-          if (n.dot(m.vertices[i]) > 0)
-            m.triangles.push_back({i, j, k});
-          else
-            m.triangles.push_back({i, k, j});
-        }
-      }
-  for (auto &v : m.vertices)
-    v.normalize();
-  for (int l = 0; l < level; ++l) {
-    std::map<std::pair<int, int>, int> midpoint;
-    auto mid = [&](int a, int b) {
-      const auto key = std::minmax(a, b);
-      auto it = midpoint.find(key);
-      if (it != midpoint.end())
-        return it->second;
-      m.vertices.push_back((m.vertices[a] + m.vertices[b]).normalized());
-      return midpoint[key] = m.num_vertices() - 1;
-    };
-    std::vector<std::array<int, 3>> finer;
-    for (const auto &t : m.triangles) {
-      const int ab = mid(t[0], t[1]), bc = mid(t[1], t[2]), ca = mid(t[2], t[0]);
-      finer.push_back({t[0], ab, ca});
-      finer.push_back({t[1], bc, ab});
-      finer.push_back({t[2], ca, bc});
-      finer.push_back({ab, bc, ca});
-    }
-    m.triangles = std::move(finer);
-  }
-  return m;
-}
-
-tri::TriangleMesh transformed(tri::TriangleMesh m, const Eigen::Matrix3d &r,
-                              const Eigen::Vector3d &t) {
-  for (auto &v : m.vertices)
-    v = r * v + t;
-  return m;
-}
+using tri_test::box;
+using tri_test::icosphere;
+using tri_test::transformed;
 
 Eigen::Matrix3d some_rotation() {
   return (Eigen::AngleAxisd(0.7, Eigen::Vector3d::UnitZ()) *
@@ -167,10 +103,7 @@ TEST(MassProperties, RepeatedMomentsKeepTheMeshAxes) {
 }
 
 TEST(MassProperties, Tetrahedron) {
-  tri::TriangleMesh m;
-  m.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-  m.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
-  const tri::MassProperties mp = tri::mass_properties(m);
+  const tri::MassProperties mp = tri::mass_properties(tri_test::tetrahedron());
   EXPECT_NEAR(mp.volume, 1.0 / 6.0, 1e-15);
   EXPECT_NEAR((mp.centre_of_mass - Eigen::Vector3d::Constant(0.25)).norm(), 0.0, 1e-15);
   // Unit right tetrahedron: int x^2 dV = 1/60, int xy dV = 1/120. About the centroid:

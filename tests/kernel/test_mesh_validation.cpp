@@ -1,6 +1,6 @@
 // validate_mesh: each kind of broken mesh gives its own message naming the problem and where.
 #include "mesh_validation.h"
-#include "shape_error.h"
+#include "test_meshes.h"
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -9,31 +9,12 @@
 
 namespace {
 
-// Box [0,a] x [0,b] x [0,c]; vertex i has x = a (i&1), y = b (i&2), z = c (i&4).
-tri::TriangleMesh box(double a = 1, double b = 1, double c = 1) {
-  tri::TriangleMesh m;
-  for (int i = 0; i < 8; ++i)
-    m.vertices.emplace_back(a * (i & 1), b * ((i >> 1) & 1), c * ((i >> 2) & 1));
-  m.triangles = {{0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}, {0, 1, 5}, {0, 5, 4},
-                 {2, 6, 7}, {2, 7, 3}, {0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}};
-  return m;
-}
-
-tri::TriangleMesh tetrahedron() {
-  tri::TriangleMesh m;
-  m.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-  m.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
-  return m;
-}
+using tri_test::box;
+using tri_test::tetrahedron;
 
 // The message of the ShapeError validate_mesh throws, or "" if it passes.
 std::string problem(const tri::TriangleMesh &m) {
-  try {
-    tri::validate_mesh(m);
-  } catch (const tri::ShapeError &e) {
-    return e.what();
-  }
-  return "";
+  return tri_test::shape_error_message([&] { tri::validate_mesh(m); });
 }
 
 // Readable failure: prints the whole message when the expected phrase is missing.

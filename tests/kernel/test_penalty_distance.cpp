@@ -11,23 +11,6 @@ using namespace tri_test;
 
 namespace {
 
-std::vector<TriangleCase> random_cases(int n, double scale, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::vector<TriangleCase> cases;
-  for (int k = 0; k < n; ++k) {
-    TriangleCase c;
-    c.name = "random " + std::to_string(k);
-    const V offset =
-        V(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)) * uniform(rng, 0, 2);
-    for (int v = 0; v < 3; ++v) {
-      c.a[v] = scale * V(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1));
-      c.b[v] = scale * (V(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)) + offset);
-    }
-    cases.push_back(c);
-  }
-  return cases;
-}
-
 // Runs the penalty on all cases, block by block.
 std::vector<std::pair<double, double>> penalty_bounds(const std::vector<TriangleCase> &cases,
                                                       int iterations,

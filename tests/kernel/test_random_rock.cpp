@@ -2,6 +2,7 @@
 // size, determinism, aspect ratios, parameter checks.
 #include "random_rock.h"
 #include "shape.h"
+#include "test_meshes.h"
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -118,13 +119,9 @@ TEST(RandomRock, StronglyElongatedRocksAreStillValid) {
   }
 }
 
+// The message of the ShapeError random_rock throws, or "" if it accepts the parameters.
 std::string rock_error(const tri::RockParameters &p) {
-  try {
-    tri::random_rock(p);
-  } catch (const tri::ShapeError &e) {
-    return e.what();
-  }
-  return "";
+  return tri_test::shape_error_message([&] { tri::random_rock(p); });
 }
 
 TEST(RandomRock, BadParametersThrowNamingTheValue) {

@@ -1,6 +1,7 @@
 // make_shape: principal frame, derived numbers, convexity, error prefix; scaled().
 #include "mesh_validation.h"
 #include "shape.h"
+#include "test_meshes.h"
 
 #include <Eigen/Geometry>
 #include <cmath>
@@ -10,15 +11,7 @@
 
 namespace {
 
-// Box [0,a] x [0,b] x [0,c]; vertex i has x = a (i&1), y = b (i&2), z = c (i&4).
-tri::TriangleMesh box(double a, double b, double c) {
-  tri::TriangleMesh m;
-  for (int i = 0; i < 8; ++i)
-    m.vertices.emplace_back(a * (i & 1), b * ((i >> 1) & 1), c * ((i >> 2) & 1));
-  m.triangles = {{0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}, {0, 1, 5}, {0, 5, 4},
-                 {2, 6, 7}, {2, 7, 3}, {0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}};
-  return m;
-}
+using tri_test::box;
 
 // An L-shaped prism (non-convex), extruded along z from the outline
 // (0,0) (2,0) (2,1) (1,1) (1,2) (0,2), height h. The caps are fans from corner (0,0), which
@@ -46,10 +39,8 @@ TEST(Shape, BoxMovesToItsPrincipalFrame) {
   const double a = 0.003, b = 0.001, c = 0.002;
   const Eigen::Matrix3d r =
       Eigen::AngleAxisd(0.9, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
-  tri::TriangleMesh m = box(a, b, c);
-  for (auto &v : m.vertices)
-    v = r * v + Eigen::Vector3d(1, 2, 3);
-  const tri::Shape s = tri::make_shape("brick", m);
+  const tri::Shape s =
+      tri::make_shape("brick", tri_test::transformed(box(a, b, c), r, Eigen::Vector3d(1, 2, 3)));
 
   EXPECT_EQ(s.name, "brick");
   const double volume = a * b * c;

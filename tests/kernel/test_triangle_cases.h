@@ -8,6 +8,9 @@
 #include "test_particles.h"
 
 #include <Eigen/Core>
+#include <cstdint>
+#include <limits>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -161,6 +164,29 @@ inline std::vector<TriangleCase> adversarial_cases(double scale, std::uint64_t s
     c.distance *= scale;
   }
   return base;
+}
+
+// n random pairs within a few triangle sizes of each other (corners in [-scale, scale]^3, the
+// second shifted by up to 2 sqrt(3) scale): mostly separated, some intersecting. Shared by
+// the penalty and pair-list kernel tests, which compare against brute force: the distance is
+// not known here (NaN, and `intersecting` is false without having been checked).
+inline std::vector<TriangleCase> random_cases(int n, double scale, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::vector<TriangleCase> cases;
+  for (int k = 0; k < n; ++k) {
+    TriangleCase c;
+    c.name = "random " + std::to_string(k);
+    c.distance = std::numeric_limits<double>::quiet_NaN();
+    c.intersecting = false;
+    const V offset =
+        V(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)) * uniform(rng, 0, 2);
+    for (int v = 0; v < 3; ++v) {
+      c.a[v] = scale * V(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1));
+      c.b[v] = scale * (V(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)) + offset);
+    }
+    cases.push_back(c);
+  }
+  return cases;
 }
 
 // Pair list helpers: case k becomes triangle k of `a` and of `b`.
