@@ -1,9 +1,13 @@
 // Reduction of triangle-pair contacts to contact points; the design is in the header.
 #include "contact_reduction.h"
 
+#include "contact_polygon.h"
+
 #include <algorithm>
 #include <limits>
 #include <numeric>
+#include <stdexcept>
+#include <string>
 
 namespace tri {
 namespace {
@@ -141,13 +145,31 @@ bool absorbed_by(const std::vector<Raw> &raw, const std::vector<int> &members,
 // normal: ties up to rounding (see the header, step 4).
 constexpr double kNormalDepthBand = 1e-6;
 
+// The two bodies' triangles; null only for the deprecated form without them.
+struct Faces {
+  const TriangleSoA *a, *b;
+};
+
+// The member's contact polygon (header, step 5) if its triangles are nearly parallel and their
+// overlap has an area beyond rounding; false otherwise.
+bool member_polygon(const Raw &r, const Faces &faces, double layer, ContactPolygon &poly) {
+  if (faces.a == nullptr || faces.b == nullptr)
+    return false;
+  const TriangleSoA &ta = *faces.a, &tb = *faces.b;
+  if (!contact_polygon(ta.vertex(r.tri_a, 0), ta.vertex(r.tri_a, 1), ta.vertex(r.tri_a, 2),
+                       tb.vertex(r.tri_b, 0), tb.vertex(r.tri_b, 1), tb.vertex(r.tri_b, 2),
+                       r.normal, layer, poly))
+    return false;
+  return poly.weight > 0.0 && poly.area > kPatchAreaRounding * poly.min_triangle_area;
+}
+
 ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &members,
                         const std::vector<int> &cls, const std::vector<int> &absorbed, int c,
-                        int seed, double layer, const Vector3d &ref) {
+                        int seed, double layer, const Vector3d &ref, const Faces &faces) {
   ContactPoint p;
   const Raw &s = raw[seed];
-  Vector3d sum_p = Vector3d::Zero(), sum_n = Vector3d::Zero();
-  double sum_w = 0.0, sum_wn = 0.0;
+  Vector3d sum_p = Vector3d::Zero(), sum_n = Vector3d::Zero(), sum_pa = Vector3d::Zero();
+  double sum_w = 0.0, sum_wn = 0.0, sum_wa = 0.0;
   p.min_distance = std::numeric_limits<double>::infinity();
   for (int i : members) {
     if (cls[i] != c)
@@ -160,12 +182,17 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
       continue; // rim contacts count, but neither place nor orient the contact
     sum_p += r.overlap * r.point;
     sum_w += r.overlap;
+    ContactPolygon poly;
+    if (member_polygon(r, faces, layer, poly)) {
+      sum_pa += poly.weight * poly.centroid;
+      sum_wa += poly.weight;
+    }
     if (r.overlap >= s.overlap - kNormalDepthBand * layer) {
       sum_n += r.overlap * r.normal;
       sum_wn += r.overlap;
     }
   }
-  p.point = sum_p / sum_w;
+  p.point = sum_wa > 0.0 ? Vector3d(sum_pa / sum_wa) : Vector3d(sum_p / sum_w);
   p.overlap = s.overlap;
   p.tri_a = s.tri_a;
   p.tri_b = s.tri_b;
@@ -178,7 +205,7 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
 }
 
 void reduce_clusters(std::vector<Raw> &raw, double layer, const ReductionParams &params,
-                     const Vector3d &ref, ReductionWorkspace &work,
+                     const Vector3d &ref, const Faces &faces, ReductionWorkspace &work,
                      std::vector<ContactPoint> &out) {
   const int n = static_cast<int>(raw.size());
   link_components(raw, params.link_length, work.parent, work.order);
@@ -246,7 +273,7 @@ void reduce_clusters(std::vector<Raw> &raw, double layer, const ReductionParams 
     }
     for (int c = first_class; c < static_cast<int>(seeds.size()); ++c)
       if (alive[c])
-        out.push_back(make_point(raw, group, cls, absorbed, c, seeds[c], layer, ref));
+        out.push_back(make_point(raw, group, cls, absorbed, c, seeds[c], layer, ref, faces));
     begin = end;
   }
   // Deepest first; ties keep component/class order (deterministic).
@@ -276,16 +303,25 @@ double recommended_link_length(double longest_edge_a, double longest_edge_b, dou
   return (2.0 * edge + eps_a + eps_b) * (1.0 + 1e-9);
 }
 
-void reduce_contacts(const TriangleContact *contacts, int n, double eps_a, double eps_b,
-                     const ReductionParams &params, ReductionWorkspace &work,
-                     std::vector<ContactPoint> &out) {
+namespace {
+
+void reduce(const TriangleContact *contacts, int n, const Faces &faces, double eps_a, double eps_b,
+            const ReductionParams &params, ReductionWorkspace &work,
+            std::vector<ContactPoint> &out) {
   out.clear();
+  const bool check = faces.a != nullptr && faces.b != nullptr;
+  const int na = check ? faces.a->num_triangles() : 0, nb = check ? faces.b->num_triangles() : 0;
   const double layer = eps_a + eps_b;
   const Vector3d ref = safe_reference(params.reference_direction);
   std::vector<Raw> &raw = work.raw;
   raw.clear();
   for (int k = 0; k < n; ++k) {
     const TriangleContact &c = contacts[k];
+    if (check && (c.tri_a < 0 || c.tri_a >= na || c.tri_b < 0 || c.tri_b >= nb))
+      throw std::out_of_range("reduce_contacts: contact " + std::to_string(k) +
+                              " names triangles " + std::to_string(c.tri_a) + ", " +
+                              std::to_string(c.tri_b) + " of meshes with " + std::to_string(na) +
+                              ", " + std::to_string(nb));
     const double distance = c.intersecting ? 0.0 : std::max(0.0, c.distance);
     const double depth = c.intersecting && std::isfinite(c.penetration_depth)
                              ? std::max(0.0, c.penetration_depth)
@@ -331,18 +367,34 @@ void reduce_contacts(const TriangleContact *contacts, int n, double eps_a, doubl
     return;
   }
   case ReductionMethod::clusters:
-    reduce_clusters(raw, layer, params, ref, work, out);
+    reduce_clusters(raw, layer, params, ref, faces, work, out);
     return;
   }
 }
 
+} // namespace
+
+void reduce_contacts(const TriangleContact *contacts, int n, const TriangleSoA &tris_a,
+                     double eps_a, const TriangleSoA &tris_b, double eps_b,
+                     const ReductionParams &params, ReductionWorkspace &work,
+                     std::vector<ContactPoint> &out) {
+  reduce(contacts, n, Faces{&tris_a, &tris_b}, eps_a, eps_b, params, work, out);
+}
+
+void reduce_contacts(const TriangleContact *contacts, int n, double eps_a, double eps_b,
+                     const ReductionParams &params, ReductionWorkspace &work,
+                     std::vector<ContactPoint> &out) {
+  reduce(contacts, n, Faces{nullptr, nullptr}, eps_a, eps_b, params, work, out);
+}
+
 std::vector<ContactPoint> reduce_contacts(const std::vector<TriangleContact> &contacts,
-                                          double eps_a, double eps_b,
+                                          const TriangleSoA &tris_a, double eps_a,
+                                          const TriangleSoA &tris_b, double eps_b,
                                           const ReductionParams &params) {
   ReductionWorkspace work;
   std::vector<ContactPoint> out;
-  reduce_contacts(contacts.data(), static_cast<int>(contacts.size()), eps_a, eps_b, params, work,
-                  out);
+  reduce_contacts(contacts.data(), static_cast<int>(contacts.size()), tris_a, eps_a, tris_b, eps_b,
+                  params, work, out);
   return out;
 }
 

@@ -36,19 +36,39 @@
 //     exactly (their separation along n_M is the patch's own gap); a second face at 90
 //     degrees or more never does.
 //  4. One ContactPoint per class: overlap = the largest member overlap (so a flat patch at
-//     uniform gap gives exactly eps_a + eps_b - gap, whatever the mesh); point = overlap-
-//     weighted centroid of the class's own members (absorbed rim contacts excluded: they lie
-//     on one side of the patch wherever it is lopsided); normal = the deepest member's normal,
-//     averaged (overlap-weighted) over the members tied with it to 1e-6 (eps_a + eps_b) (a
-//     flat face). The deepest pair is the pair of closest points of the two surfaces, whose
-//     direction is the contact normal of two convex bodies; averaging over the whole class
-//     instead lets the slanted contacts near a corner or border tilt a flat contact (measured:
-//     up to 5% lateral force for a tilted cube on a finely meshed plane);
-//     min_distance = the smallest member distance (for the paper's time-step rule);
-//     num_merged counts every member, absorbed ones included.
-//     Known limit: where two faces are parallel their closest points are not unique, and the
-//     kernel's choice (a vertex, say) biases the centroid by up to a triangle size, on coarse
-//     meshes a lever arm error; the magnitude and normal of the force are unaffected.
+//     uniform gap gives exactly eps_a + eps_b - gap, whatever the mesh); point: see step 5;
+//     normal = the deepest member's normal, averaged (overlap-weighted) over the members tied
+//     with it to 1e-6 (eps_a + eps_b) (a flat face). The deepest pair is the pair of closest
+//     points of the two surfaces, whose direction is the contact normal of two convex bodies;
+//     averaging over the whole class instead lets the slanted contacts near a corner or border
+//     tilt a flat contact (measured: up to 5% lateral force for a tilted cube on a finely
+//     meshed plane); min_distance = the smallest member distance (for the paper's time-step
+//     rule); num_merged counts every member, absorbed ones included.
+//  5. The point, from the triangles themselves where faces are parallel. Where two faces are
+//     parallel every point of their overlap is a closest point, and the kernel returns one
+//     arbitrary closest pair (often a vertex): a centroid of such midpoints is off-centre by up
+//     to a triangle size (measured before this rule, 4 mm cube resting flat on a plane: 1.2 mm
+//     with 2 triangles per face on a 2-triangle plane, 0.26 mm with 128), a false torque that
+//     tips a resting cube, and a point that depends on the meshing. So each member whose two
+//     triangles are nearly parallel (within kParallelFaceAngle = 10 degrees, contact_polygon.h)
+//     gets its contact polygon: the overlap of the two triangles projected along their mean
+//     normal, cut to where the soft layers overlap, with weight = integral of the local overlap
+//     over it and centroid = its centre of pressure on the mid-surface. The triangles of a face
+//     partition it, so the polygons of all pairs of two faces tile the faces' overlap region,
+//     and the class's point = the weight-averaged centroid of its members' polygons is the
+//     centre of that region (of pressure, when the faces are slightly tilted: towards the side
+//     that presses harder, a restoring torque) for ANY meshing, to rounding. Members that are
+//     not nearly parallel (vertex-face, edge-edge, edge-face, faces at a clear angle) carry no
+//     area: in a class with polygons they do not move the point (their contact lies on the
+//     boundary of the faces' region anyway: a resting cube's side faces touch the plane along
+//     its bottom edges). A class without any polygon (area above kPatchAreaRounding of the
+//     smaller triangle) keeps the rule for points: the overlap-weighted centroid of the
+//     members' midpoints, the closest-point contact of a vertex, an edge or a tilted face.
+//     Absorbed rim contacts are excluded either way (they lie on one side of the patch
+//     wherever it is lopsided; their polygons are empty anyway: their triangles lie outside
+//     each other's footprint). The switch at 10 degrees moves the point by at most the width
+//     of the wedge where the layers overlap, (eps_a + eps_b) / tan(10 deg).
+//     The baselines (paper_min_width, none) keep the kernel's midpoints: they are the paper's.
 //
 // Intersecting triangles (real surfaces crossing: the soft layer was overrun). The kernel's
 // normal for such a pair (minimum-overlap separating axis) is used when finite; otherwise
@@ -68,10 +88,12 @@
 // Output order: deepest contact first.
 //
 // Cost: O(n log n) for n raw contacts (sort + sweep along x for the links), plus
-// O(n * classes) for the normal split; no allocation when the workspace is reused.
+// O(n * classes) for the normal split, plus one polygon clip (fixed-size, on the stack) per
+// member; no allocation when the workspace is reused.
 #pragma once
 
 #include "particle_contacts.h" // TriangleContact
+#include "triangle_soa.h"
 
 #include <Eigen/Core>
 
@@ -124,14 +146,28 @@ struct ReductionWorkspace {
 };
 
 // Reduces `n` triangle-pair contacts of one pair (entries with overlap <= 0 are ignored) and
-// writes the contact points into `out` (cleared first), deepest first. eps_a, eps_b >= 0 (m).
-void reduce_contacts(const TriangleContact *contacts, int n, double eps_a, double eps_b,
+// writes the contact points into `out` (cleared first), deepest first. tris_a, tris_b: the
+// world-frame triangles that the contacts were found on (find_triangle_contacts' a and b);
+// contact k's tri_a indexes tris_a and tri_b indexes tris_b (std::out_of_range otherwise).
+// eps_a, eps_b >= 0 (m).
+void reduce_contacts(const TriangleContact *contacts, int n, const TriangleSoA &tris_a,
+                     double eps_a, const TriangleSoA &tris_b, double eps_b,
                      const ReductionParams &params, ReductionWorkspace &work,
                      std::vector<ContactPoint> &out);
 
+// Transitional, to be removed once body_interaction.cpp passes the triangles: without them no
+// contact polygon can be computed, so every class keeps the midpoint rule (the off-centre
+// point of parallel faces that step 5 fixes). Deprecated so that the build names its callers.
+[[deprecated("pass the triangles: reduce_contacts(contacts, n, tris_a, eps_a, tris_b, eps_b, "
+             "params, work, out)")]] void
+reduce_contacts(const TriangleContact *contacts, int n, double eps_a, double eps_b,
+                const ReductionParams &params, ReductionWorkspace &work,
+                std::vector<ContactPoint> &out);
+
 // Convenience form for tests and tools.
 std::vector<ContactPoint> reduce_contacts(const std::vector<TriangleContact> &contacts,
-                                          double eps_a, double eps_b,
+                                          const TriangleSoA &tris_a, double eps_a,
+                                          const TriangleSoA &tris_b, double eps_b,
                                           const ReductionParams &params);
 
 } // namespace tri

@@ -5,6 +5,7 @@
 // test does not depend on the distance kernel under test elsewhere.
 #include "contact_force.h"
 #include "contact_reduction.h"
+#include "particle_contacts.h"
 
 #include <gtest/gtest.h>
 
@@ -13,6 +14,7 @@
 #include <cstdio>
 #include <limits>
 #include <random>
+#include <stdexcept>
 #include <vector>
 
 namespace {
@@ -26,6 +28,15 @@ struct Tri {
   Vector3d v[3];
 };
 using Mesh = std::vector<Tri>;
+
+tri::TriangleSoA soa_of(const Mesh &m) {
+  tri::TriangleSoA s;
+  s.resize(static_cast<int>(m.size()));
+  for (int t = 0; t < static_cast<int>(m.size()); ++t)
+    for (int k = 0; k < 3; ++k)
+      s.set_vertex(t, k, m[t].v[k]);
+  return s;
+}
 
 // ---- brute-force triangle distance (separated triangles only; enough for these scenes) ----
 
@@ -219,13 +230,14 @@ Outcome run_case(const Case &cs, const Matrix3d &R = Matrix3d::Identity()) {
     for (Vector3d &v : t.v)
       v += centre;
   const std::vector<TriangleContact> raw = brute_contacts(a, b, kLayer);
+  const tri::TriangleSoA sa = soa_of(a), sb = soa_of(b);
   const tri::ReductionParams p = params_for(kSide / cs.k, 2 * half_plane / cs.plane_k);
   tri::ReductionParams paper = p;
   paper.method = tri::ReductionMethod::paper_min_width;
-  const auto points = tri::reduce_contacts(raw, kEps, kEps, p);
+  const auto points = tri::reduce_contacts(raw, sa, kEps, sb, kEps, p);
   Outcome o;
   o.raw = static_cast<int>(raw.size());
-  o.paper = static_cast<int>(tri::reduce_contacts(raw, kEps, kEps, paper).size());
+  o.paper = static_cast<int>(tri::reduce_contacts(raw, sa, kEps, sb, kEps, paper).size());
   o.clusters = static_cast<int>(points.size());
   o.force = force_on_cube(points, centre);
   o.point = points.empty() ? Vector3d::Zero() : Vector3d(points[0].point - centre);
@@ -293,7 +305,8 @@ TEST(ContactReduction, TwoSeparateRegionsStayTwoContacts) {
   a.insert(a.end(), right.begin(), right.end());
   const Mesh b = plane(2 * kSide, 16); // cells of kSide / 4, like the cubes'
   const auto raw = brute_contacts(a, b, kLayer);
-  const auto points = tri::reduce_contacts(raw, kEps, kEps, params_for(kSide / 4, kSide / 4));
+  const auto points =
+      tri::reduce_contacts(raw, soa_of(a), kEps, soa_of(b), kEps, params_for(kSide / 4, kSide / 4));
   ASSERT_EQ(points.size(), 2u);
   std::vector<double> xs = {points[0].point.x(), points[1].point.x()};
   std::sort(xs.begin(), xs.end());
@@ -318,7 +331,7 @@ TEST(ContactReduction, WedgedInCornerKeepsOneContactPerFace) {
   const auto raw = brute_contacts(a, b, kLayer);
   tri::ReductionParams p = params_for(kSide / 4, kSide / 8);
   p.reference_direction = Vector3d(1, 0, -1).normalized();
-  const auto points = tri::reduce_contacts(raw, kEps, kEps, p);
+  const auto points = tri::reduce_contacts(raw, soa_of(a), kEps, soa_of(b), kEps, p);
   ASSERT_EQ(points.size(), 2u);
   EXPECT_NEAR(points[0].overlap, kLayer - gap_floor, 1e-12);
   EXPECT_GT(points[0].normal.dot(-Vector3d::UnitZ()), 0.999);
@@ -334,11 +347,12 @@ TEST(ContactReduction, PermutationOfInputGivesIdenticalOutput) {
   std::vector<TriangleContact> raw = brute_contacts(a, b, kLayer);
   ASSERT_GT(raw.size(), 100u);
   const tri::ReductionParams p = params_for(kSide / 4, 1.5 * kSide / 60);
-  const auto ref = tri::reduce_contacts(raw, kEps, kEps, p);
+  const tri::TriangleSoA sa = soa_of(a), sb = soa_of(b);
+  const auto ref = tri::reduce_contacts(raw, sa, kEps, sb, kEps, p);
   std::mt19937 rng(12345);
   for (int trial = 0; trial < 5; ++trial) {
     std::shuffle(raw.begin(), raw.end(), rng);
-    const auto out = tri::reduce_contacts(raw, kEps, kEps, p);
+    const auto out = tri::reduce_contacts(raw, sa, kEps, sb, kEps, p);
     ASSERT_EQ(out.size(), ref.size());
     for (std::size_t i = 0; i < out.size(); ++i) {
       for (int k = 0; k < 3; ++k) {
@@ -350,6 +364,36 @@ TEST(ContactReduction, PermutationOfInputGivesIdenticalOutput) {
       EXPECT_EQ(out[i].tri_a, ref[i].tri_a);
     }
   }
+}
+
+// Hand-made contacts test the clustering, not the placement: their triangles are taken
+// perpendicular to each other (a's in planes x = const, b's in planes y = const), so that no
+// member has a contact polygon and each keeps its midpoint, weighted by overlap (the rule for
+// vertex, edge and tilted-face contacts). Triangle indices 0..15.
+Mesh crossed_triangles(int count, int axis) {
+  Mesh m;
+  for (int i = 0; i < count; ++i) {
+    Tri t;
+    for (int k = 0; k < 3; ++k) {
+      t.v[k] = Vector3d::Zero();
+      t.v[k][axis] = 1e-4 * i;
+    }
+    t.v[1][(axis + 1) % 3] = 1e-4;
+    t.v[2][(axis + 2) % 3] = 1e-4;
+    m.push_back(t);
+  }
+  return m;
+}
+
+std::vector<ContactPoint> reduce_crossed(const std::vector<TriangleContact> &raw, int count_a,
+                                         int count_b, const tri::ReductionParams &p) {
+  return tri::reduce_contacts(raw, soa_of(crossed_triangles(count_a, 0)), kEps,
+                              soa_of(crossed_triangles(count_b, 1)), kEps, p);
+}
+
+std::vector<ContactPoint> reduce_hand(const std::vector<TriangleContact> &raw,
+                                      const tri::ReductionParams &p) {
+  return reduce_crossed(raw, 16, 16, p);
 }
 
 TriangleContact hand_contact(int ta, int tb, const Vector3d &p, const Vector3d &n, double d,
@@ -364,9 +408,8 @@ TEST(ContactReduction, IntersectingContactWithoutNormalGetsReferenceDirection) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   tri::ReductionParams p = params_for(1e-3, 1e-3);
   p.reference_direction = Vector3d(3, 0, 4); // not unit on purpose
-  const auto points = tri::reduce_contacts(
-      {hand_contact(0, 0, Vector3d(1e-3, 0, 0), Vector3d(nan, nan, nan), 0.0, true, 3e-5)}, kEps,
-      kEps, p);
+  const auto points = reduce_hand(
+      {hand_contact(0, 0, Vector3d(1e-3, 0, 0), Vector3d(nan, nan, nan), 0.0, true, 3e-5)}, p);
   ASSERT_EQ(points.size(), 1u);
   EXPECT_TRUE(points[0].intersecting);
   EXPECT_TRUE(points[0].normal.allFinite());
@@ -378,10 +421,9 @@ TEST(ContactReduction, IntersectingContactWithoutNormalGetsReferenceDirection) {
 // weighted mean cancels, yet the contact's normal is finite and unit.
 TEST(ContactReduction, OpposingIntersectingNormalsStayFinite) {
   const Vector3d n(0, 0, 1);
-  const auto points =
-      tri::reduce_contacts({hand_contact(0, 0, Vector3d::Zero(), n, 0.0, true),
-                            hand_contact(1, 1, Vector3d(1e-5, 0, 0), -n, 0.0, true)},
-                           kEps, kEps, params_for(1e-3, 1e-3));
+  const auto points = reduce_hand({hand_contact(0, 0, Vector3d::Zero(), n, 0.0, true),
+                                   hand_contact(1, 1, Vector3d(1e-5, 0, 0), -n, 0.0, true)},
+                                  params_for(1e-3, 1e-3));
   ASSERT_FALSE(points.empty());
   for (const ContactPoint &c : points) {
     EXPECT_TRUE(c.normal.allFinite());
@@ -399,7 +441,7 @@ TEST(ContactReduction, SunkFaceIsFlippedToPushOut) {
     raw.push_back(hand_contact(i, i, Vector3d(1e-4 * i, 0, 0), Vector3d::UnitZ(), d, false));
   raw.push_back(hand_contact(10, 4, Vector3d(-1e-4, 0, 0), -Vector3d::UnitZ(), 0.0, true, d));
   raw.push_back(hand_contact(11, 5, Vector3d(4e-4, 0, 0), -Vector3d::UnitZ(), 0.0, true, d));
-  const auto points = tri::reduce_contacts(raw, kEps, kEps, params_for(2e-4, 2e-4));
+  const auto points = reduce_hand(raw, params_for(2e-4, 2e-4));
   ASSERT_EQ(points.size(), 1u);
   EXPECT_NEAR(points[0].normal.z(), -1.0, 1e-12);
   EXPECT_NEAR(points[0].overlap, kLayer + d, 1e-15);
@@ -419,7 +461,7 @@ TEST(ContactReduction, RimContactIsAbsorbedPerpendicularFaceIsNot) {
   const Vector3d corner(0, 0, g), below(h, 0, 0);
   raw.push_back(
       {7, 7, (below - corner).norm(), corner, below, (below - corner).normalized(), false, 0.0});
-  auto points = tri::reduce_contacts(raw, kEps, kEps, params_for(1e-4, 1e-4));
+  auto points = reduce_hand(raw, params_for(1e-4, 1e-4));
   ASSERT_EQ(points.size(), 1u);
   EXPECT_EQ(points[0].num_merged, 4);
   EXPECT_NEAR(points[0].normal.z(), -1.0, 1e-15);
@@ -428,7 +470,7 @@ TEST(ContactReduction, RimContactIsAbsorbedPerpendicularFaceIsNot) {
   // A wall face at x = 1.5 g, touched by a's side at distance 0.9 g: a contact of its own.
   raw.push_back(
       hand_contact(8, 8, Vector3d(1.05 * g, 0, 0.5 * g), Vector3d::UnitX(), 0.9 * g, false));
-  points = tri::reduce_contacts(raw, kEps, kEps, params_for(1e-4, 1e-4));
+  points = reduce_hand(raw, params_for(1e-4, 1e-4));
   ASSERT_EQ(points.size(), 2u);
   EXPECT_NEAR(points[0].normal.x(), 1.0, 1e-15);
   EXPECT_NEAR(points[1].normal.z(), -1.0, 1e-15);
@@ -436,10 +478,10 @@ TEST(ContactReduction, RimContactIsAbsorbedPerpendicularFaceIsNot) {
 
 // Raw contacts at or beyond the layer carry no force and are dropped; no contacts, no points.
 TEST(ContactReduction, ContactsOutsideTheLayerAreIgnored) {
-  EXPECT_TRUE(tri::reduce_contacts({}, kEps, kEps, params_for(1e-3, 1e-3)).empty());
+  EXPECT_TRUE(reduce_hand({}, params_for(1e-3, 1e-3)).empty());
   const auto points =
-      tri::reduce_contacts({hand_contact(0, 0, Vector3d::Zero(), Vector3d::UnitZ(), kLayer, false)},
-                           kEps, kEps, params_for(1e-3, 1e-3));
+      reduce_hand({hand_contact(0, 0, Vector3d::Zero(), Vector3d::UnitZ(), kLayer, false)},
+                  params_for(1e-3, 1e-3));
   EXPECT_TRUE(points.empty());
 }
 
@@ -448,6 +490,190 @@ TEST(ContactReduction, RecommendedLinkLengthUsesFinerMesh) {
       tri::recommended_link_length(1e-3, std::numeric_limits<double>::infinity(), 1e-4, 2e-4),
       2e-3 + 3e-4, 1e-8 * 2.3e-3);
   EXPECT_NEAR(tri::recommended_link_length(5e-3, 1e-3, 1e-4, 1e-4), 2.2e-3, 1e-8 * 2.2e-3);
+}
+
+// ---- the contact point of flat faces: contact polygons (contact_polygon.h) ----
+
+// Triangle contacts of a and b: source 0 the brute force above, 1 and 2 the distance kernel
+// (brute force, hybrid). On parallel faces each picks its own arbitrary closest pairs.
+std::vector<TriangleContact> contacts_by(int source, const Mesh &a, const Mesh &b) {
+  if (source == 0)
+    return brute_contacts(a, b, kLayer);
+  tri::ContactOptions opt;
+  opt.kernel = source == 1 ? tri::DistanceKernel::BruteForce : tri::DistanceKernel::Hybrid;
+  tri::ContactStats stats;
+  std::vector<TriangleContact> out;
+  tri::find_triangle_contacts(soa_of(a), kEps, soa_of(b), kEps, opt, out, stats);
+  return out;
+}
+
+// A cube (2 k^2 triangles per face) turned by R and moved so that its lowest vertex is at
+// height `gap` above the plane z = 0, its centre above (x, y); returns the centre.
+Vector3d place_cube(Mesh &a, int k, const Vector3d &xy, double gap, const Matrix3d &R) {
+  a = cube(kSide, k, Vector3d::Zero(), R);
+  double low = std::numeric_limits<double>::infinity();
+  for (const Tri &t : a)
+    for (const Vector3d &v : t.v)
+      low = std::min(low, v.z());
+  const Vector3d centre(xy.x(), xy.y(), gap - low);
+  for (Tri &t : a)
+    for (Vector3d &v : t.v)
+      v += centre;
+  return centre;
+}
+
+Matrix3d yaw(double angle) {
+  return Eigen::AngleAxisd(angle, Vector3d::UnitZ()).toRotationMatrix();
+}
+
+// The cube of the problem statement: resting flat, meshed 2 to 128 triangles per face, on a
+// plane of 2 triangles or finely meshed, centred anywhere, turned about z or not, contacts from
+// three sources. The point is the centre of the bottom face on the mid-plane, to rounding;
+// before contact polygons it was 1.2 mm off (2 triangles per face, 2-triangle plane).
+TEST(ContactReductionPoint, FlatFaceIsCentredForEveryMeshing) {
+  const Vector3d xy(0.37e-3, -0.21e-3, 0);
+  const double gap = 0.5 * kLayer, half_plane = 1.5 * kSide;
+  double worst = 0.0;
+  for (const int plane_k : {1, 16, 60})
+    for (const int k : {1, 2, 4, 8})
+      for (const double turn : {0.0, 0.3})
+        for (int source = 0; source < 3; ++source) {
+          if (plane_k == 60 && source == 0)
+            continue; // the slow test-side brute force is covered by the coarser planes
+          Mesh a;
+          place_cube(a, k, xy, gap, yaw(turn));
+          const Mesh b = plane(half_plane, plane_k);
+          const auto raw = contacts_by(source, a, b);
+          const auto points = tri::reduce_contacts(raw, soa_of(a), kEps, soa_of(b), kEps,
+                                                   params_for(kSide / k, 2 * half_plane / plane_k));
+          ASSERT_EQ(points.size(), 1u) << "k " << k << " plane " << plane_k;
+          const Vector3d expected = xy + Vector3d(0, 0, 0.5 * gap);
+          const double off = (points[0].point - expected).norm();
+          worst = std::max(worst, off);
+          EXPECT_LE(off, 1e-6 * kSide) << "tri/face " << 2 * k * k << " plane " << plane_k
+                                       << " yaw " << turn << " source " << source;
+          EXPECT_NEAR(points[0].overlap, kLayer - gap, 1e-12 * kLayer);
+          EXPECT_NEAR(points[0].normal.z(), -1.0, 1e-12);
+        }
+  std::printf("flat cube: largest contact-point offset %.3e m (side %.0e m)\n", worst, kSide);
+}
+
+// The cube overhangs a corner of the plane: the point is the centre of the overlap rectangle.
+TEST(ContactReductionPoint, OverhangingCubeIsCentredOnTheOverlap) {
+  const double half_plane = 0.75 * kSide, gap = 0.3 * kLayer, h = 0.5 * kSide;
+  const Vector3d xy(half_plane - 0.2 * kSide, -half_plane + 0.35 * kSide, 0);
+  // Overlap of [x - h, x + h] x [y - h, y + h] with the plane [-H, H]^2.
+  const double x0 = std::max(xy.x() - h, -half_plane), x1 = std::min(xy.x() + h, half_plane);
+  const double y0 = std::max(xy.y() - h, -half_plane), y1 = std::min(xy.y() + h, half_plane);
+  const Vector3d expected(0.5 * (x0 + x1), 0.5 * (y0 + y1), 0.5 * gap);
+  ASSERT_GT((expected.head<2>() - xy.head<2>()).norm(), 0.1 * kSide); // a real overhang
+  for (const int plane_k : {1, 16})
+    for (const int k : {1, 2, 4, 8})
+      for (int source = 0; source < 3; source += 2) {
+        Mesh a;
+        place_cube(a, k, xy, gap, Matrix3d::Identity());
+        const Mesh b = plane(half_plane, plane_k);
+        const auto raw = contacts_by(source, a, b);
+        const auto points = tri::reduce_contacts(raw, soa_of(a), kEps, soa_of(b), kEps,
+                                                 params_for(kSide / k, 2 * half_plane / plane_k));
+        ASSERT_EQ(points.size(), 1u);
+        EXPECT_LE((points[0].point - expected).norm(), 1e-6 * kSide)
+            << "tri/face " << 2 * k * k << " plane " << plane_k << " source " << source << ": "
+            << points[0].point.transpose() << " vs " << expected.transpose();
+      }
+}
+
+// Faces tilted by a small angle (below kParallelFaceAngle) press harder on their lower side:
+// the point is the centre of pressure of an overlap that grows linearly towards it, the same
+// for every meshing, on the lower side (a restoring torque). Tilt 0.005 rad: the whole face is
+// in the layer; 0.03 rad: the layers overlap on a strip along the low edge only.
+TEST(ContactReductionPoint, SlightlyTiltedFaceGivesCentreOfPressure) {
+  const double gap = 0.2 * kLayer, h = 0.5 * kSide;
+  const Vector3d xy(-0.3e-3, 0.45e-3, 0);
+  for (const double tilt : {0.005, 0.03}) {
+    const Matrix3d R = Eigen::AngleAxisd(tilt, Vector3d::UnitY()).toRotationMatrix(); // +x low
+    // Along the face, s in [-h, h] from its centre, the gap is gap + sin(tilt) (h - s): the
+    // overlap o(s) = o_low - slope (h - s) on [max(-h, h - o_low / slope), h].
+    const double slope = std::sin(tilt), o_low = kLayer - gap;
+    const double lo = std::max(-h, h - o_low / slope);
+    auto moment = [&](double s, int power) { // antiderivative of o(s) s^power
+      const double c0 = o_low - slope * h;
+      return power == 0 ? c0 * s + 0.5 * slope * s * s : 0.5 * c0 * s * s + slope * s * s * s / 3;
+    };
+    const double s_c = (moment(h, 1) - moment(lo, 1)) / (moment(h, 0) - moment(lo, 0));
+    const double x_c = s_c * std::cos(tilt); // world x from the face's centre
+    std::vector<Vector3d> found;
+    for (const int plane_k : {1, 16})
+      for (const int k : {1, 2, 4, 8}) {
+        Mesh a;
+        const Vector3d centre = place_cube(a, k, xy, gap, R);
+        const Mesh b = plane(1.5 * kSide, plane_k);
+        const auto raw = contacts_by(2, a, b);
+        const auto points = tri::reduce_contacts(raw, soa_of(a), kEps, soa_of(b), kEps,
+                                                 params_for(kSide / k, 3 * kSide / plane_k));
+        ASSERT_EQ(points.size(), 1u);
+        found.push_back(points[0].point);
+        const Vector3d face_centre = centre + R * Vector3d(0, 0, -h);
+        std::printf("tilt %.3f tri/face %3d plane %2d: point - face centre (%.4e, %.4e), "
+                    "centre of pressure %.4e\n",
+                    tilt, 2 * k * k, plane_k, points[0].point.x() - face_centre.x(),
+                    points[0].point.y() - face_centre.y(), x_c);
+        EXPECT_GT(points[0].point.x() - face_centre.x(), 0.0); // on the lower side
+        EXPECT_NEAR(points[0].point.x() - face_centre.x(), x_c, 5e-4 * kSide);
+        EXPECT_NEAR(points[0].point.y(), face_centre.y(), 1e-6 * kSide);
+      }
+    for (const Vector3d &p : found)
+      EXPECT_LE((p - found[0]).norm(), 1e-6 * kSide) << "tilt " << tilt;
+  }
+}
+
+// Tilted beyond kParallelFaceAngle the cube rests on an edge or a vertex: no member has a
+// contact polygon and the point is exactly what the midpoint rule gives (the same contacts
+// reduced with triangles that are never parallel), on the edge or at the vertex.
+TEST(ContactReductionPoint, TiltedCubeKeepsItsEdgeOrVertexPoint) {
+  const double gap = 0.4 * kLayer;
+  const Vector3d xy(0.2e-3, 0.1e-3, 0);
+  const Matrix3d rotations[] = {
+      Eigen::AngleAxisd(0.5, Vector3d::UnitY()).toRotationMatrix(), // edge down, 29 degrees
+      Eigen::AngleAxisd(0.2, Vector3d::UnitY()).toRotationMatrix(), // edge down, 11 degrees
+      (Eigen::AngleAxisd(0.6, Vector3d::UnitX()) * Eigen::AngleAxisd(0.4, Vector3d::UnitY()))
+          .toRotationMatrix()}; // vertex down
+  for (int r = 0; r < 3; ++r)
+    for (const int plane_k : {1, 16})
+      for (const int k : {1, 4}) {
+        Mesh a;
+        place_cube(a, k, xy, gap, rotations[r]);
+        const Mesh b = plane(1.5 * kSide, plane_k);
+        const auto raw = contacts_by(2, a, b);
+        const tri::ReductionParams p = params_for(kSide / k, 3 * kSide / plane_k);
+        const auto points = tri::reduce_contacts(raw, soa_of(a), kEps, soa_of(b), kEps, p);
+        const auto midpoint_rule =
+            reduce_crossed(raw, static_cast<int>(a.size()), static_cast<int>(b.size()), p);
+        ASSERT_EQ(points.size(), 1u);
+        ASSERT_EQ(midpoint_rule.size(), 1u);
+        for (int i = 0; i < 3; ++i)
+          EXPECT_EQ(points[0].point[i], midpoint_rule[0].point[i]);
+        // At the lowest vertex (vertex down) or over the lowest edge (edge down, about y):
+        // within the strip where the layers overlap, not at the face's centre 2 mm away.
+        Vector3d low(0, 0, std::numeric_limits<double>::infinity());
+        for (const Tri &t : a)
+          for (const Vector3d &v : t.v)
+            if (v.z() < low.z())
+              low = v;
+        EXPECT_NEAR(points[0].point.x(), low.x(), 0.5 * kLayer);
+        if (r == 2) {
+          EXPECT_NEAR(points[0].point.y(), low.y(), 0.5 * kLayer);
+        }
+        EXPECT_NEAR(points[0].point.z(), 0.5 * gap, 0.1 * kLayer);
+      }
+}
+
+// A contact naming a triangle that the meshes do not have is a caller error, said as such.
+TEST(ContactReduction, TriangleIndexOutOfRangeThrows) {
+  EXPECT_THROW(
+      reduce_crossed({hand_contact(3, 0, Vector3d::Zero(), Vector3d::UnitZ(), kEps, false)}, 3, 1,
+                     params_for(1e-3, 1e-3)),
+      std::out_of_range);
 }
 
 } // namespace
