@@ -1,12 +1,17 @@
 // Tests of contact_model.h, contact_history.h and contact_force.h: hand-computed LIGGGHTS
 // hooke/stiffness forces, the tangential history (stick, slip, projection), no_history
 // friction, torques with friction, Newton's third law and angular momentum balance, history
-// slot matching, and the returned statistics.
+// slot matching, the returned statistics, and no false torque on a cube resting flat.
 #include "contact_force.h"
+#include "particle_contacts.h"
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <random>
 
@@ -323,6 +328,112 @@ TEST(PairContactForce, StatisticsAreReturned) {
   const auto none = tri::pair_contact_force({}, a, b, c, 1e-5, history);
   EXPECT_EQ(none.contacts_after, 0);
   EXPECT_EQ(none.force_a, Vector3d::Zero());
+}
+
+// ---- a cube resting flat: no false torque ----
+
+// n x n grid cells of two triangles on the square origin + [0, 1] s + [0, 1] t.
+void add_grid(std::vector<Vector3d> &v, const Vector3d &origin, const Vector3d &s,
+              const Vector3d &t, int n) {
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      auto at = [&](int di, int dj) {
+        return Vector3d(origin + s * (double(i + di) / n) + t * (double(j + dj) / n));
+      };
+      for (const Vector3d &p : {at(0, 0), at(1, 0), at(1, 1), at(0, 0), at(1, 1), at(0, 1)})
+        v.push_back(p);
+    }
+}
+
+tri::TriangleSoA soa_of(const std::vector<Vector3d> &v) {
+  tri::TriangleSoA s;
+  s.resize(static_cast<int>(v.size() / 3));
+  for (std::size_t i = 0; i < v.size(); ++i)
+    s.set_vertex(static_cast<int>(i / 3), static_cast<int>(i % 3), v[i]);
+  return s;
+}
+
+// Cube of side `side` (2 n^2 triangles per face) turned by `yaw` about z, centred at `centre`.
+tri::TriangleSoA cube(double side, int n, const Vector3d &centre, double yaw) {
+  std::vector<Vector3d> v;
+  const double h = 0.5 * side;
+  for (int axis = 0; axis < 3; ++axis)
+    for (const double sign : {-1.0, 1.0}) {
+      Vector3d o = Vector3d::Constant(-h), s = Vector3d::Zero(), t = Vector3d::Zero();
+      o[axis] = sign * h;
+      s[(axis + 1) % 3] = side;
+      t[(axis + 2) % 3] = side;
+      add_grid(v, o, s, t, n);
+    }
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(yaw, Vector3d::UnitZ()).toRotationMatrix();
+  for (Vector3d &p : v)
+    p = centre + R * p;
+  return soa_of(v);
+}
+
+// The cube of the contact-point problem (4 mm, soft layers 0.1 mm) at rest on a plane, at an
+// arbitrary place, meshed 2 to 128 triangles per face on a 2-triangle or a fine plane, turned
+// or not, the plane as body a or b: the force is kn * overlap straight up and the torque about
+// the cube's centre of mass is zero. With the kernel's closest points as contact point it was
+// up to kn * overlap * 1.2 mm, enough to tip the cube.
+TEST(PairContactForce, RestingCubeHasNoTorqueAboutItsCentreOfMass) {
+  const double side = 0.004, eps = 1e-4, gap = 0.8 * eps, half_plane = 1.5 * side;
+  ContactCoefficients c = material();
+  tri::ReductionWorkspace work;
+  std::vector<tri::TriangleContact> raw;
+  std::vector<ContactPoint> points;
+  double worst[2] = {0.0, 0.0}; // brute force, hybrid
+  for (const int plane_n : {1, 16})
+    for (const int n : {1, 2, 4, 8})
+      for (const double yaw : {0.0, 0.7})
+        for (const bool cube_is_a : {true, false})
+          for (const auto kernel : {tri::DistanceKernel::BruteForce, tri::DistanceKernel::Hybrid}) {
+            const Vector3d centre(0.41e-3, -0.27e-3, 0.5 * side + gap);
+            const tri::TriangleSoA box = cube(side, n, centre, yaw);
+            std::vector<Vector3d> pv;
+            add_grid(pv, Vector3d(-half_plane, -half_plane, 0), Vector3d(2 * half_plane, 0, 0),
+                     Vector3d(0, 2 * half_plane, 0), plane_n);
+            const tri::TriangleSoA plane = soa_of(pv);
+            const tri::TriangleSoA &ta = cube_is_a ? box : plane, &tb = cube_is_a ? plane : box;
+            raw.clear();
+            tri::ContactStats stats;
+            tri::ContactOptions opt;
+            opt.kernel = kernel;
+            tri::find_triangle_contacts(ta, eps, tb, eps, opt, raw, stats);
+            tri::ReductionParams params;
+            params.link_length = tri::recommended_link_length(
+                std::sqrt(2.0) * side / n, std::sqrt(2.0) * 2 * half_plane / plane_n, eps, eps);
+            params.reference_direction = (cube_is_a ? -1.0 : 1.0) * Vector3d::UnitZ();
+            tri::reduce_contacts(raw.data(), static_cast<int>(raw.size()), ta, eps, tb, eps, params,
+                                 work, points);
+            const BodyState cube_state = body(centre, Vector3d::Zero(), Vector3d::Zero(), 1e-4);
+            const BodyState plane_state =
+                body(Vector3d(0, 0, -0.01), Vector3d::Zero(), Vector3d::Zero(), 0.0);
+            double history[tri::kHistoryDoubles] = {};
+            const auto r =
+                cube_is_a
+                    ? tri::pair_contact_force(points, cube_state, plane_state, c, 1e-6, history)
+                    : tri::pair_contact_force(points, plane_state, cube_state, c, 1e-6, history);
+            const Vector3d force_on_cube = cube_is_a ? r.force_a : Vector3d(-r.force_a);
+            const Vector3d torque_on_cube = cube_is_a ? r.torque_a : r.torque_b;
+            const double weight = c.kn * (2 * eps - gap);
+            ASSERT_EQ(r.contacts_after, 1);
+            // The hybrid kernel's normal is exact to its tolerance (1e-4 eps in distance), not to
+            // rounding: the lateral force that this leaves acts at the height of the centre.
+            const double lateral = force_on_cube.head<2>().norm();
+            const double slack =
+                kernel == tri::DistanceKernel::Hybrid ? 1e-6 * weight : 1e-12 * weight;
+            EXPECT_LE(lateral, slack);
+            EXPECT_NEAR(force_on_cube.z(), weight, 1e-12 * weight);
+            double &w = worst[kernel == tri::DistanceKernel::Hybrid];
+            w = std::max(w, torque_on_cube.norm() / (weight * side));
+            EXPECT_LE(torque_on_cube.norm(), 1e-9 * weight * side + lateral * side)
+                << "tri/face " << 2 * n * n << " plane " << plane_n << " yaw " << yaw
+                << " cube is a " << cube_is_a;
+          }
+  std::printf(
+      "resting cube: largest |torque| / (weight * side) %.2e (brute force), %.2e (hybrid)\n",
+      worst[0], worst[1]);
 }
 
 } // namespace

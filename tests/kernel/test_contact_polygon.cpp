@@ -1,0 +1,319 @@
+// Tests of contact_polygon.h: overlap polygons of parallel triangles with known areas and
+// centroids, the cut to the soft layer, agreement with quadrature on random nearly parallel
+// pairs, the 10-degree threshold at 0.99 and 1.01 of it, independence of vertex order and of
+// the roles of a and b, the side of the contact normal, scales 1e-6 to 1e3, degenerate input.
+#include "contact_polygon.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+namespace {
+
+using Eigen::Matrix3d;
+using Eigen::Vector2d;
+using Eigen::Vector3d;
+
+struct Tri {
+  Vector3d v[3];
+};
+
+bool patch(const Tri &a, const Tri &b, const Vector3d &normal, double layer,
+           tri::ContactPolygon &p) {
+  return tri::contact_polygon(a.v[0], a.v[1], a.v[2], b.v[0], b.v[1], b.v[2], normal, layer, p);
+}
+
+Vector3d centroid(const Tri &t) { return (t.v[0] + t.v[1] + t.v[2]) / 3.0; }
+double area(const Tri &t) { return 0.5 * (t.v[1] - t.v[0]).cross(t.v[2] - t.v[0]).norm(); }
+
+Tri lifted(const Tri &t, double dz) {
+  Tri r = t;
+  for (Vector3d &v : r.v)
+    v.z() += dz;
+  return r;
+}
+
+Tri reversed(const Tri &t) { return {{t.v[0], t.v[2], t.v[1]}}; }
+
+const double kLayer = 2e-4;
+const Tri kBase = {{Vector3d(0, 0, 0), Vector3d(1e-3, 0, 0), Vector3d(0.3e-3, 0.8e-3, 0)}};
+
+TEST(ContactPolygon, CongruentTrianglesGiveTheTriangleOnTheMidPlane) {
+  const double g = 0.3 * kLayer;
+  tri::ContactPolygon p;
+  ASSERT_TRUE(patch(kBase, reversed(lifted(kBase, g)), Vector3d::UnitZ(), kLayer, p));
+  const double A = area(kBase);
+  EXPECT_NEAR(p.area, A, 1e-12 * A);
+  EXPECT_NEAR(p.weight, (kLayer - g) * A, 1e-12 * kLayer * A);
+  EXPECT_NEAR(p.min_triangle_area, A, 1e-12 * A);
+  EXPECT_LE((p.centroid - (centroid(kBase) + Vector3d(0, 0, 0.5 * g))).norm(), 1e-12 * 1e-3);
+}
+
+// A triangle and its point reflection through its centroid overlap in a hexagon of 2/3 of its
+// area with the same centroid.
+TEST(ContactPolygon, StarOfDavidIsTwoThirdsAtTheCommonCentroid) {
+  const Vector3d c = centroid(kBase);
+  Tri b;
+  for (int k = 0; k < 3; ++k)
+    b.v[k] = 2.0 * c - kBase.v[k] + Vector3d(0, 0, 0.5 * kLayer);
+  tri::ContactPolygon p;
+  ASSERT_TRUE(patch(kBase, b, Vector3d::UnitZ(), kLayer, p));
+  const double A = area(kBase);
+  EXPECT_NEAR(p.area, 2.0 / 3.0 * A, 1e-12 * A);
+  EXPECT_NEAR(p.weight, 0.5 * kLayer * p.area, 1e-12 * kLayer * A);
+  EXPECT_LE((p.centroid - (c + Vector3d(0, 0, 0.25 * kLayer))).norm(), 1e-12 * 1e-3);
+}
+
+TEST(ContactPolygon, NestedGivesTheSmallerDisjointGivesNothing) {
+  Tri small;
+  const Vector3d c = centroid(kBase);
+  for (int k = 0; k < 3; ++k)
+    small.v[k] = c + 0.4 * (kBase.v[k] - c) + Vector3d(0, 0, 0.1 * kLayer);
+  tri::ContactPolygon p;
+  for (const bool small_is_a : {false, true}) {
+    ASSERT_TRUE(small_is_a ? patch(small, kBase, -Vector3d::UnitZ(), kLayer, p)
+                           : patch(kBase, small, Vector3d::UnitZ(), kLayer, p));
+    EXPECT_NEAR(p.area, area(small), 1e-12 * area(small));
+    EXPECT_NEAR(p.min_triangle_area, area(small), 1e-12 * area(small));
+    EXPECT_LE((p.centroid - (centroid(small) - Vector3d(0, 0, 0.05 * kLayer))).norm(), 1e-15);
+  }
+  // Far apart in the plane: parallel, so `true`, but nothing overlaps.
+  Tri away = small;
+  for (Vector3d &v : away.v)
+    v.x() += 5e-3;
+  ASSERT_TRUE(patch(kBase, away, Vector3d::UnitZ(), kLayer, p));
+  EXPECT_EQ(p.area, 0.0);
+  EXPECT_EQ(p.weight, 0.0);
+}
+
+// Two halves of a square, one on each side (a shared edge in projection): touching only.
+TEST(ContactPolygon, SharedEdgeIsTouchingOnly) {
+  const Tri a = {{Vector3d(0, 0, 0), Vector3d(1e-3, 0, 0), Vector3d(1e-3, 1e-3, 0)}};
+  const Tri b = {{Vector3d(0, 0, 1e-5), Vector3d(1e-3, 1e-3, 1e-5), Vector3d(0, 1e-3, 1e-5)}};
+  tri::ContactPolygon p;
+  ASSERT_TRUE(patch(a, b, Vector3d::UnitZ(), kLayer, p));
+  EXPECT_LE(p.area, tri::kPatchAreaRounding * p.min_triangle_area);
+}
+
+// a sinks and b rises along x by the same slope (so the mean normal is z): the gap g0 + 2 t x
+// leaves the layer at x* = (layer - g0) / (2 t), and only the part of the (congruent)
+// triangles with x < x* counts, with an overlap falling linearly to zero there.
+TEST(ContactPolygon, CutToTheSoftLayer) {
+  const double L = 1e-3, g0 = 0.6 * kLayer, t = std::tan(0.06); // 6.9 degrees between them
+  Tri a = {{Vector3d(0, 0, 0), Vector3d(L, 0, 0), Vector3d(0, L, 0)}};
+  Tri b = a;
+  for (Vector3d &v : a.v)
+    v.z() = -t * v.x();
+  for (Vector3d &v : b.v)
+    v.z() = g0 + t * v.x();
+  const double xs = (kLayer - g0) / (2 * t);
+  ASSERT_LT(xs, 0.9 * L);
+  tri::ContactPolygon p;
+  ASSERT_TRUE(patch(a, b, Vector3d::UnitZ(), kLayer, p));
+  const double expected = 0.5 * L * L - 0.5 * (L - xs) * (L - xs);
+  EXPECT_NEAR(p.area, expected, 1e-12 * expected);
+  // Overlap o0 - 2 t x on the strip x in [0, x*] of height L - x.
+  const double o0 = kLayer - g0;
+  auto F = [&](double x) { // antiderivatives of (o0 - 2 t x)(L - x) and of that times x
+    return o0 * L * x - 0.5 * (o0 + 2 * t * L) * x * x + 2 * t * x * x * x / 3.0;
+  };
+  auto G = [&](double x) {
+    return 0.5 * o0 * L * x * x - (o0 + 2 * t * L) * x * x * x / 3.0 + 0.5 * t * x * x * x * x;
+  };
+  const double W = F(xs) - F(0);
+  EXPECT_NEAR(p.weight, W, 1e-12 * W);
+  const double xc = (G(xs) - G(0)) / W;
+  EXPECT_NEAR(p.centroid.x(), xc, 1e-12 * L);
+  EXPECT_NEAR(p.centroid.z(), 0.5 * g0, 1e-12 * L); // mid-surface: (-t x + g0 + t x) / 2
+}
+
+// Random nearly parallel pairs (tilts up to 8 degrees, gaps across the layer, the layer cut
+// biting often) against midpoint quadrature on a fine grid in the projection plane.
+TEST(ContactPolygon, AgreesWithQuadrature) {
+  std::mt19937_64 rng(2024);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int cut = 0, compared = 0;
+  double worst_area = 0, worst_weight = 0, worst_centroid = 0;
+  for (int trial = 0; trial < 24; ++trial) {
+    const Matrix3d R =
+        Eigen::AngleAxisd(3.0 * u(rng), Vector3d(u(rng), u(rng), u(rng)).normalized())
+            .toRotationMatrix();
+    const Matrix3d tilt =
+        Eigen::AngleAxisd(0.14 * std::abs(u(rng)), Vector3d(u(rng), u(rng), 0).normalized())
+            .toRotationMatrix();
+    Tri a, b;
+    for (int k = 0; k < 3; ++k) {
+      a.v[k] = Vector3d(1e-3 * u(rng), 1e-3 * u(rng), 0);
+      b.v[k] = a.v[k] + Vector3d(0.4e-3 * u(rng), 0.4e-3 * u(rng), 0);
+    }
+    const Vector3d centre_b(0, 0, kLayer * (0.2 + 0.6 * std::abs(u(rng))));
+    for (int k = 0; k < 3; ++k)
+      b.v[k] = centre_b + tilt * b.v[k];
+    const Vector3d shift(0.1 * u(rng), 0.1 * u(rng), 0.1 * u(rng));
+    for (int k = 0; k < 3; ++k) {
+      a.v[k] = shift + R * a.v[k];
+      b.v[k] = shift + R * b.v[k];
+    }
+    const Vector3d normal = R * Vector3d::UnitZ();
+    tri::ContactPolygon p;
+    ASSERT_TRUE(patch(a, b, normal, kLayer, p));
+    // Quadrature with the same definition: along m, over the plane orthogonal to it.
+    const Vector3d na = (a.v[1] - a.v[0]).cross(a.v[2] - a.v[0]).normalized();
+    Vector3d nb = (b.v[1] - b.v[0]).cross(b.v[2] - b.v[0]).normalized();
+    if (na.dot(nb) < 0)
+      nb = -nb;
+    Vector3d m = (na + nb).normalized();
+    if (m.dot(normal) < 0)
+      m = -m;
+    const Vector3d e1 = m.unitOrthogonal(), e2 = m.cross(e1);
+    auto to2 = [&](const Vector3d &x) {
+      return Vector2d((x - shift).dot(e1), (x - shift).dot(e2));
+    };
+    auto inside = [&](const Tri &t, const Vector2d &x) {
+      double s[3];
+      for (int k = 0; k < 3; ++k) {
+        const Vector2d p0 = to2(t.v[k]), p1 = to2(t.v[(k + 1) % 3]);
+        const Vector2d d = p1 - p0, r = x - p0;
+        s[k] = d.x() * r.y() - d.y() * r.x();
+      }
+      return (s[0] >= 0 && s[1] >= 0 && s[2] >= 0) || (s[0] <= 0 && s[1] <= 0 && s[2] <= 0);
+    };
+    auto height = [&](const Tri &t, const Vector3d &n, const Vector2d &x) {
+      const Vector3d q = shift + x.x() * e1 + x.y() * e2;
+      return n.dot(t.v[0] - q) / n.dot(m);
+    };
+    const int N = 1200;
+    const double h = 3.2e-3 / N;
+    double A = 0, W = 0;
+    Vector3d M = Vector3d::Zero();
+    for (int i = 0; i < N; ++i)
+      for (int j = 0; j < N; ++j) {
+        const Vector2d xl(-1.6e-3 + (i + 0.5) * h, -1.6e-3 + (j + 0.5) * h);
+        if (!inside(a, xl) || !inside(b, xl))
+          continue;
+        const double ha = height(a, na, xl), hb = height(b, nb, xl), o = kLayer - (hb - ha);
+        if (o < 0)
+          continue;
+        A += h * h;
+        W += o * h * h;
+        M += o * h * h * (shift + xl.x() * e1 + xl.y() * e2 + 0.5 * (ha + hb) * m);
+      }
+    if (A < 2500 * h * h) { // under 50 x 50 grid cells: too small for the grid to resolve
+      EXPECT_LE(p.area, 5000 * h * h);
+      continue;
+    }
+    ++compared;
+    worst_area = std::max(worst_area, std::abs(p.area - A) / A);
+    worst_weight = std::max(worst_weight, std::abs(p.weight - W) / W);
+    worst_centroid = std::max(worst_centroid, (p.centroid - M / W).norm());
+    if (W < kLayer * A * 0.999)
+      ++cut;
+    EXPECT_NEAR(p.area, A, 5e-3 * A) << "trial " << trial;
+    EXPECT_NEAR(p.weight, W, 5e-3 * W) << "trial " << trial;
+    EXPECT_LE((p.centroid - M / W).norm(), 2.7e-6) << "trial " << trial;
+  }
+  EXPECT_GE(compared, 12);
+  EXPECT_GT(cut, 0); // the layer cut was exercised
+  std::printf("%d pairs compared, %d cut by the layer; largest relative error of the area %.1e, "
+              "of the weight %.1e; largest centroid error %.1e m (grid cell %.1e m)\n",
+              compared, cut, worst_area, worst_weight, worst_centroid, 3.2e-3 / 1200);
+}
+
+TEST(ContactPolygon, ParallelMeansWithinTenDegrees) {
+  for (const double f : {0.99, 1.01}) {
+    const Matrix3d R =
+        Eigen::AngleAxisd(f * tri::kParallelFaceAngle, Vector3d(1, 2, 0).normalized())
+            .toRotationMatrix();
+    Tri b;
+    const Vector3d c = centroid(kBase);
+    for (int k = 0; k < 3; ++k)
+      b.v[k] = c + R * (kBase.v[k] - c) + Vector3d(0, 0, 0.5 * kLayer);
+    tri::ContactPolygon p;
+    EXPECT_EQ(patch(kBase, b, Vector3d::UnitZ(), kLayer, p), f < 1.0);
+    if (f > 1.0) {
+      EXPECT_EQ(p.area, 0.0);
+      EXPECT_EQ(p.weight, 0.0);
+    }
+  }
+}
+
+// Vertex order (either orientation, any start) and the roles of a and b (with the normal
+// reversed) change the result by rounding only.
+TEST(ContactPolygon, IndependentOfVertexOrderAndRoles) {
+  const Matrix3d R = Eigen::AngleAxisd(0.05, Vector3d(0.3, -1, 0).normalized()).toRotationMatrix();
+  Tri b;
+  for (int k = 0; k < 3; ++k)
+    b.v[k] = R * (Vector3d(0.6e-3, 0.5e-3, 0) - kBase.v[k]) + Vector3d(0, 0, 0.4 * kLayer);
+  tri::ContactPolygon ref;
+  ASSERT_TRUE(patch(kBase, b, Vector3d::UnitZ(), kLayer, ref));
+  ASSERT_GT(ref.area, 0.05 * area(kBase));
+  auto same = [&](const tri::ContactPolygon &p, const char *what) {
+    EXPECT_NEAR(p.area, ref.area, 1e-11 * ref.area) << what;
+    EXPECT_NEAR(p.weight, ref.weight, 1e-11 * ref.weight) << what;
+    EXPECT_LE((p.centroid - ref.centroid).norm(), 1e-11 * 1e-3) << what;
+  };
+  tri::ContactPolygon p;
+  for (int start = 0; start < 3; ++start) {
+    const Tri ra = {{kBase.v[start], kBase.v[(start + 1) % 3], kBase.v[(start + 2) % 3]}};
+    const Tri rb = {{b.v[(start + 2) % 3], b.v[start], b.v[(start + 1) % 3]}};
+    ASSERT_TRUE(patch(ra, reversed(rb), Vector3d::UnitZ(), kLayer, p));
+    same(p, "vertex order");
+    ASSERT_TRUE(patch(reversed(ra), rb, Vector3d::UnitZ(), kLayer, p));
+    same(p, "orientation");
+  }
+  ASSERT_TRUE(patch(b, kBase, -Vector3d::UnitZ(), kLayer, p));
+  same(p, "roles swapped");
+}
+
+// The contact normal says which side b is on: b behind a (a face sunk through the other, as
+// the reduction flips it) gives overlap layer + gap, not layer - gap.
+TEST(ContactPolygon, NormalSideSetsTheSignOfTheGap) {
+  const double g = 0.3 * kLayer;
+  tri::ContactPolygon p;
+  ASSERT_TRUE(patch(kBase, lifted(kBase, g), -Vector3d::UnitZ(), kLayer, p));
+  EXPECT_NEAR(p.weight, (kLayer + g) * area(kBase), 1e-12 * kLayer * area(kBase));
+}
+
+TEST(ContactPolygon, ScaleAndPositionFree) {
+  const Matrix3d R = Eigen::AngleAxisd(0.05, Vector3d(1, 1, 0).normalized()).toRotationMatrix();
+  Tri b0;
+  const Vector3d c = centroid(kBase);
+  for (int k = 0; k < 3; ++k)
+    b0.v[k] = c + R * (0.7 * (c - kBase.v[k])) + Vector3d(0, 0, 0.3 * kLayer);
+  tri::ContactPolygon ref;
+  ASSERT_TRUE(patch(kBase, b0, Vector3d::UnitZ(), kLayer, ref));
+  for (const double s : {1e-6, 1e-3, 1.0, 1e3})
+    for (const double far : {0.0, 1e3}) { // far: moved 1000 sizes away from the origin
+      const Vector3d offset = Vector3d(far, -far, 0.5 * far) * s * 1e-3;
+      Tri a, b;
+      for (int k = 0; k < 3; ++k) {
+        a.v[k] = s * kBase.v[k] + offset;
+        b.v[k] = s * b0.v[k] + offset;
+      }
+      tri::ContactPolygon p;
+      ASSERT_TRUE(patch(a, b, Vector3d::UnitZ(), s * kLayer, p));
+      const double tol = far > 0 ? 1e-9 : 1e-12;
+      EXPECT_NEAR(p.area, s * s * ref.area, tol * s * s * ref.area) << s << " " << far;
+      EXPECT_NEAR(p.weight, s * s * s * ref.weight, tol * s * s * s * ref.weight);
+      EXPECT_LE((p.centroid - offset - s * ref.centroid).norm(), tol * s * 1e-3);
+    }
+}
+
+TEST(ContactPolygon, DegenerateTriangleIsRejected) {
+  const Tri line = {{Vector3d(0, 0, 1e-5), Vector3d(1e-3, 0, 1e-5), Vector3d(2e-3, 0, 1e-5)}};
+  const Tri point = {{Vector3d(0, 0, 1e-5), Vector3d(0, 0, 1e-5), Vector3d(0, 0, 1e-5)}};
+  tri::ContactPolygon p;
+  EXPECT_FALSE(patch(kBase, line, Vector3d::UnitZ(), kLayer, p));
+  EXPECT_FALSE(patch(point, kBase, -Vector3d::UnitZ(), kLayer, p));
+  const double nan = std::nan("");
+  const Tri bad = {{Vector3d(nan, 0, 0), Vector3d(1e-3, 0, 0), Vector3d(0, 1e-3, 0)}};
+  EXPECT_FALSE(patch(kBase, bad, Vector3d::UnitZ(), kLayer, p));
+  EXPECT_EQ(p.area, 0.0);
+}
+
+} // namespace
