@@ -4,6 +4,8 @@
 
 #include "private_map_access.h"
 
+#include "compute_tri_stats.h"
+#include "fix_tri_adapt_dt.h"
 #include "fix_tri_contact_history.h"
 #include "fix_tri_nve.h"
 #include "fix_tri_particles.h"
@@ -23,6 +25,20 @@ namespace {
 template <typename T> LAMMPS_NS::Fix *make_fix(LAMMPS_NS::LAMMPS *lmp, int narg, char **arg) {
   return new T(lmp, narg, arg);
 }
+template <typename T>
+LAMMPS_NS::Compute *make_compute(LAMMPS_NS::LAMMPS *lmp, int iarg, int narg, char **arg) {
+  return new T(lmp, iarg, narg, arg); // LIGGGHTS computes take iarg by reference
+}
+
+struct ComputeRow {
+  const char *name;
+  ComputeCreator create;
+};
+
+const ComputeRow compute_table[] = {
+    {"tri/stats", &make_compute<LAMMPS_NS::ComputeTriStats>},
+};
+
 template <typename T> LAMMPS_NS::Pair *make_pair(LAMMPS_NS::LAMMPS *lmp) { return new T(lmp); }
 
 struct PairRow {
@@ -44,6 +60,7 @@ const FixRow fix_table[] = {
     {"tri/nve", &make_fix<LAMMPS_NS::FixTriNVE>},
     {"tri/vtk", &make_fix<LAMMPS_NS::FixTriVTK>},
     {"tri/wall", &make_fix<LAMMPS_NS::FixTriWall>},
+    {"tri/adapt_dt", &make_fix<LAMMPS_NS::FixTriAdaptDt>},
     // Replaces LIGGGHTS's own: same behaviour for pair gran, and it also serves tri/gran.
     {"contacthistory", &make_fix<LAMMPS_NS::FixTriContactHistory>},
 };
@@ -53,6 +70,9 @@ const FixRow fix_table[] = {
 void register_styles(LAMMPS_NS::LAMMPS &lmp) {
   for (const PairRow &row : pair_table)
     (*lmp.force->pair_map)[row.name] = row.create; // Force keeps this map public
+  ComputeMap &computes = compute_map(*lmp.modify);
+  for (const ComputeRow &row : compute_table)
+    computes[row.name] = row.create;
   FixMap &fixes = fix_map(*lmp.modify);
   for (const FixRow &row : fix_table)
     fixes[row.name] = row.create;
@@ -65,6 +85,8 @@ std::vector<StyleName> registered_styles() {
   for (const FixRow &row : fix_table)
     if (std::string(row.name) != "contacthistory") // internal, not a user style
       names.push_back({"fix", row.name});
+  for (const ComputeRow &row : compute_table)
+    names.push_back({"compute", row.name});
   return names;
 }
 

@@ -23,8 +23,8 @@ PairForceResult body_interaction(const Body &a, const Body &b, const Interaction
   params.reference_direction = length > 0.0 ? Eigen::Vector3d(centres / length)
                                             : Eigen::Vector3d::UnitZ();
   reduce_contacts(scratch.triangle_contacts.data(),
-                  static_cast<int>(scratch.triangle_contacts.size()), a.epsilon, b.epsilon,
-                  params, scratch.reduction, scratch.points);
+                  static_cast<int>(scratch.triangle_contacts.size()), *a.triangles, a.epsilon,
+                  *b.triangles, b.epsilon, params, scratch.reduction, scratch.points);
   return pair_contact_force(scratch.points, a.state, b.state, s.coefficients, dt, history);
 }
 

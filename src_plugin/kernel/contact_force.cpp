@@ -15,8 +15,12 @@ PairForceResult pair_contact_force(const std::vector<ContactPoint> &contacts, co
   const bool with_history = coeff.tangential == TangentialModel::history && history != nullptr;
   int slot_of[kHistorySlots];
   double next[kHistoryDoubles] = {};
+  // Levers are measured from a point that does not depend on which body is called a: the
+  // midpoint of two particles (LIGGGHTS may swap i and j of a pair between neighbour-list
+  // builds, see history_flips_sign), or the particle's centre against a wall (mass 0).
+  const Vector3d origin = b.mass > 0.0 ? Vector3d(0.5 * (a.x + b.x)) : a.x;
   if (with_history)
-    match_history(history, contacts.data(), n, a.x, slot_of);
+    match_history(history, contacts.data(), n, origin, slot_of);
 
   const double m_eff = effective_mass(a.mass, b.mass);
   for (int i = 0; i < n; ++i) {
@@ -32,7 +36,7 @@ PairForceResult pair_contact_force(const std::vector<ContactPoint> &contacts, co
         shear = slot_shear(history, slot_of[i]);
       f_t = tangential_force_history(coeff, c.normal, k.v_t, f_n, m_eff, dt, shear);
       if (tracked)
-        write_slot(next, i, c.normal, shear, c.point - a.x);
+        write_slot(next, i, c.normal, shear, c.point - origin);
       else
         ++r.untracked;
       break;

@@ -17,7 +17,7 @@ void write_slot(double *history, int s, const Eigen::Vector3d &normal, const Eig
 }
 
 void match_history(const double *history, const ContactPoint *contacts, int n,
-                   const Eigen::Vector3d &x_a, int slot_of_contact[kHistorySlots]) {
+                   const Eigen::Vector3d &origin, int slot_of_contact[kHistorySlots]) {
   const int tracked = std::min(n, kHistorySlots);
   for (int i = 0; i < kHistorySlots; ++i)
     slot_of_contact[i] = -1;
@@ -30,7 +30,7 @@ void match_history(const double *history, const ContactPoint *contacts, int n,
   int count = 0;
   const double cos_match = std::cos(kHistoryMatchAngle);
   for (int i = 0; i < tracked; ++i) {
-    const Eigen::Vector3d lever = contacts[i].point - x_a;
+    const Eigen::Vector3d lever = contacts[i].point - origin;
     for (int s = 0; s < kHistorySlots; ++s) {
       if (!slot_occupied(history, s))
         continue;

@@ -6,7 +6,8 @@
 // s * kHistorySlotDoubles:
 //   [0..2] patch normal n (unit, from a towards b, world frame); all zero = empty slot
 //   [3..5] shear displacement (m, world frame, in the tangent plane of n)
-//   [6..8] lever p - x_a (m, world frame): where the patch was, relative to a's centre
+//   [6..8] lever p - o (m, world frame): where the patch was, relative to the pair's origin o
+//          (midpoint of the two centres; a's centre against a wall)
 // A zero-filled array (what LIGGGHTS gives a new pair) is "no patches".
 //
 // Matching rule, applied each step to the pair's reduced contacts (deepest first, only the
@@ -33,9 +34,9 @@ constexpr int kHistoryDoubles = kHistorySlots * kHistorySlotDoubles; // 36
 constexpr double kHistoryMatchAngle = 0.7853981633974483;            // rad, 45 degrees
 
 // For each of the first min(n, kHistorySlots) contacts: the matched old slot, or -1 (new).
-// `history` holds kHistoryDoubles values; x_a is a's centre of mass (m).
+// `history` holds kHistoryDoubles values; `origin` is the pair's lever origin (m).
 void match_history(const double *history, const ContactPoint *contacts, int n,
-                   const Eigen::Vector3d &x_a, int slot_of_contact[kHistorySlots]);
+                   const Eigen::Vector3d &origin, int slot_of_contact[kHistorySlots]);
 
 // Whether history value k changes sign when the host swaps the roles of a and b (LIGGGHTS
 // keeps a pair's history on both atoms under newton off and negates such values for the

@@ -145,7 +145,7 @@ bool absorbed_by(const std::vector<Raw> &raw, const std::vector<int> &members,
 // normal: ties up to rounding (see the header, step 4).
 constexpr double kNormalDepthBand = 1e-6;
 
-// The two bodies' triangles; null only for the deprecated form without them.
+// The two bodies' triangles (never null).
 struct Faces {
   const TriangleSoA *a, *b;
 };
@@ -153,8 +153,6 @@ struct Faces {
 // The member's contact polygon (header, step 5) if its triangles are nearly parallel and their
 // overlap has an area beyond rounding; false otherwise.
 bool member_polygon(const Raw &r, const Faces &faces, double layer, ContactPolygon &poly) {
-  if (faces.a == nullptr || faces.b == nullptr)
-    return false;
   const TriangleSoA &ta = *faces.a, &tb = *faces.b;
   if (!contact_polygon(ta.vertex(r.tri_a, 0), ta.vertex(r.tri_a, 1), ta.vertex(r.tri_a, 2),
                        tb.vertex(r.tri_b, 0), tb.vertex(r.tri_b, 1), tb.vertex(r.tri_b, 2),
@@ -309,15 +307,14 @@ void reduce(const TriangleContact *contacts, int n, const Faces &faces, double e
             const ReductionParams &params, ReductionWorkspace &work,
             std::vector<ContactPoint> &out) {
   out.clear();
-  const bool check = faces.a != nullptr && faces.b != nullptr;
-  const int na = check ? faces.a->num_triangles() : 0, nb = check ? faces.b->num_triangles() : 0;
+  const int na = faces.a->num_triangles(), nb = faces.b->num_triangles();
   const double layer = eps_a + eps_b;
   const Vector3d ref = safe_reference(params.reference_direction);
   std::vector<Raw> &raw = work.raw;
   raw.clear();
   for (int k = 0; k < n; ++k) {
     const TriangleContact &c = contacts[k];
-    if (check && (c.tri_a < 0 || c.tri_a >= na || c.tri_b < 0 || c.tri_b >= nb))
+    if (c.tri_a < 0 || c.tri_a >= na || c.tri_b < 0 || c.tri_b >= nb)
       throw std::out_of_range("reduce_contacts: contact " + std::to_string(k) +
                               " names triangles " + std::to_string(c.tri_a) + ", " +
                               std::to_string(c.tri_b) + " of meshes with " + std::to_string(na) +
@@ -379,12 +376,6 @@ void reduce_contacts(const TriangleContact *contacts, int n, const TriangleSoA &
                      const ReductionParams &params, ReductionWorkspace &work,
                      std::vector<ContactPoint> &out) {
   reduce(contacts, n, Faces{&tris_a, &tris_b}, eps_a, eps_b, params, work, out);
-}
-
-void reduce_contacts(const TriangleContact *contacts, int n, double eps_a, double eps_b,
-                     const ReductionParams &params, ReductionWorkspace &work,
-                     std::vector<ContactPoint> &out) {
-  reduce(contacts, n, Faces{nullptr, nullptr}, eps_a, eps_b, params, work, out);
 }
 
 std::vector<ContactPoint> reduce_contacts(const std::vector<TriangleContact> &contacts,

@@ -155,15 +155,6 @@ void reduce_contacts(const TriangleContact *contacts, int n, const TriangleSoA &
                      const ReductionParams &params, ReductionWorkspace &work,
                      std::vector<ContactPoint> &out);
 
-// Transitional, to be removed once body_interaction.cpp passes the triangles: without them no
-// contact polygon can be computed, so every class keeps the midpoint rule (the off-centre
-// point of parallel faces that step 5 fixes). Deprecated so that the build names its callers.
-[[deprecated("pass the triangles: reduce_contacts(contacts, n, tris_a, eps_a, tris_b, eps_b, "
-             "params, work, out)")]] void
-reduce_contacts(const TriangleContact *contacts, int n, double eps_a, double eps_b,
-                const ReductionParams &params, ReductionWorkspace &work,
-                std::vector<ContactPoint> &out);
-
 // Convenience form for tests and tools.
 std::vector<ContactPoint> reduce_contacts(const std::vector<TriangleContact> &contacts,
                                           const TriangleSoA &tris_a, double eps_a,

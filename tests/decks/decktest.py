@@ -61,7 +61,8 @@ def last_frame(path):
 def test_help(ctx):
     p = subprocess.run([ctx.exe, "-h"], stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                        text=True, errors="replace", timeout=120, env=dict(os.environ, **MPI_ENV))
-    for style in ("tri/particles", "tri/nve", "tri/vtk"):
+    for style in ("tri/particles", "tri/nve", "tri/vtk", "tri/gran", "tri/wall", "tri/adapt_dt",
+                  "tri/stats"):
         check(style in p.stdout, f"'liggghts-tri -h' does not list {style}")
     check("Pair styles" in p.stdout and "gran" in p.stdout,
           "'liggghts-tri -h' lost LIGGGHTS's own style list")

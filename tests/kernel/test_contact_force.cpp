@@ -220,7 +220,30 @@ TEST(PairContactForce, TorqueIsLeverCrossForceIncludingFriction) {
   // The history slot now holds this contact's normal, shear and lever.
   EXPECT_NEAR((tri::slot_normal(history, 0) - cp.normal).norm(), 0.0, 1e-15);
   EXPECT_NEAR((tri::slot_shear(history, 0) - shear).norm(), 0.0, 1e-20);
-  EXPECT_NEAR((tri::slot_lever(history, 0) - (cp.point - a.x)).norm(), 0.0, 1e-18);
+  // Lever from the midpoint of the centres: unchanged when the host swaps a and b.
+  EXPECT_NEAR((tri::slot_lever(history, 0) - (cp.point - 0.5 * (a.x + b.x))).norm(), 0.0, 1e-18);
+}
+
+TEST(PairContactForce, HistoryIsTheSameWhenTheHostSwapsTheBodies) {
+  // LIGGGHTS keeps a pair's history on both atoms and may present the pair as (j, i) after a
+  // neighbour-list rebuild, negating the values marked by history_flips_sign.
+  ContactCoefficients c = material();
+  const BodyState a = body(Vector3d(0, 0, 0.002), Vector3d(0.05, 0, 0), Vector3d(0, 3, 0), 2e-3);
+  const BodyState b =
+      body(Vector3d(0.001, 0, -0.002), Vector3d(0, 0.01, 0), Vector3d(1, 0, 0), 1e-3);
+  ContactPoint ab = point(Vector3d(0.0005, 0.0002, 0), -Vector3d::UnitZ(), 1e-4);
+  ContactPoint ba = ab;
+  ba.normal = -ab.normal;
+  double h_ab[tri::kHistoryDoubles] = {}, h_ba[tri::kHistoryDoubles] = {};
+  for (int step = 0; step < 3; ++step) {
+    const auto r_ab = tri::pair_contact_force({ab}, a, b, c, 1e-5, h_ab);
+    const auto r_ba = tri::pair_contact_force({ba}, b, a, c, 1e-5, h_ba);
+    EXPECT_NEAR((r_ab.force_a + r_ba.force_a).norm(), 0.0, 1e-15 * r_ab.force_a.norm());
+    for (int k = 0; k < tri::kHistoryDoubles; ++k) {
+      const double swapped = tri::history_flips_sign(k) ? -h_ba[k] : h_ba[k];
+      EXPECT_NEAR(h_ab[k], swapped, 1e-15) << "history value " << k << " at step " << step;
+    }
+  }
 }
 
 TEST(PairContactForce, NewtonThirdLawAndAngularMomentumBalance) {
