@@ -1,0 +1,104 @@
+#!/usr/bin/env python3
+"""Closed, outward-oriented triangle meshes for the validation decks, written as ASCII STL.
+Standard library only, so every validation script (and plain python3) can import it.
+
+  python3 meshgen.py icosphere LEVEL RADIUS out.stl   # 20 * 4**LEVEL triangles
+  python3 meshgen.py cube N SIDE out.stl              # N x N squares per face: 12 N^2 triangles
+  python3 meshgen.py plane HALF_WIDTH out.stl         # a square of 2 triangles at z = 0, normal +z
+"""
+import math
+import sys
+
+
+def icosphere(level, radius):
+    t = (1.0 + math.sqrt(5.0)) / 2.0
+    v = [(-1, t, 0), (1, t, 0), (-1, -t, 0), (1, -t, 0), (0, -1, t), (0, 1, t), (0, -1, -t),
+         (0, 1, -t), (t, 0, -1), (t, 0, 1), (-t, 0, -1), (-t, 0, 1)]
+    v = [tuple(c / math.sqrt(sum(x * x for x in p)) for c in p) for p in v]
+    f = [(0, 11, 5), (0, 5, 1), (0, 1, 7), (0, 7, 10), (0, 10, 11), (1, 5, 9), (5, 11, 4),
+         (11, 10, 2), (10, 7, 6), (7, 1, 8), (3, 9, 4), (3, 4, 2), (3, 2, 6), (3, 6, 8),
+         (3, 8, 9), (4, 9, 5), (2, 4, 11), (6, 2, 10), (8, 6, 7), (9, 8, 1)]
+    for _ in range(level):
+        mid = {}
+
+        def midpoint(a, b):
+            key = (min(a, b), max(a, b))
+            if key not in mid:
+                p = [(x + y) / 2 for x, y in zip(v[a], v[b])]
+                n = math.sqrt(sum(x * x for x in p))
+                v.append(tuple(x / n for x in p))
+                mid[key] = len(v) - 1
+            return mid[key]
+
+        nf = []
+        for a, b, c in f:
+            ab, bc, ca = midpoint(a, b), midpoint(b, c), midpoint(c, a)
+            nf += [(a, ab, ca), (b, bc, ab), (c, ca, bc), (ab, bc, ca)]
+        f = nf
+    return [tuple(radius * x for x in p) for p in v], f
+
+
+def cube(n, side):
+    """Each face an n x n grid of squares, two triangles each; centred at the origin."""
+    verts, index, faces = [], {}, []
+
+    def vid(p):
+        key = tuple(round(c * 2 * n) for c in p)  # exact grid coordinates in units of side/2n
+        if key not in index:
+            index[key] = len(verts)
+            verts.append(tuple(side * c for c in p))
+        return index[key]
+
+    h = 0.5
+    for axis in range(3):
+        for sign in (-1, 1):
+            u, w = (axis + 1) % 3, (axis + 2) % 3
+            for i in range(n):
+                for j in range(n):
+                    def corner(a, b):
+                        p = [0.0, 0.0, 0.0]
+                        p[axis] = sign * h
+                        p[u] = -h + (i + a) / n
+                        p[w] = -h + (j + b) / n
+                        return vid(p)
+                    c00, c10, c11, c01 = corner(0, 0), corner(1, 0), corner(1, 1), corner(0, 1)
+                    # (u, w, axis) is right-handed, so u x w points along +axis.
+                    if sign > 0:
+                        faces += [(c00, c10, c11), (c00, c11, c01)]
+                    else:
+                        faces += [(c00, c11, c10), (c00, c01, c11)]
+    return verts, faces
+
+
+def plane(half):
+    v = [(-half, -half, 0.0), (half, -half, 0.0), (half, half, 0.0), (-half, half, 0.0)]
+    return v, [(0, 1, 2), (0, 2, 3)]
+
+
+def write_stl(path, verts, faces, name="mesh"):
+    with open(path, "w") as out:
+        out.write(f"solid {name}\n")
+        for a, b, c in faces:
+            pa, pb, pc = verts[a], verts[b], verts[c]
+            e1 = [pb[k] - pa[k] for k in range(3)]
+            e2 = [pc[k] - pa[k] for k in range(3)]
+            nrm = [e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                   e1[0] * e2[1] - e1[1] * e2[0]]
+            ln = math.sqrt(sum(x * x for x in nrm)) or 1.0
+            out.write(" facet normal %.9g %.9g %.9g\n  outer loop\n" % tuple(x / ln for x in nrm))
+            for p in (pa, pb, pc):
+                out.write("   vertex %.17g %.17g %.17g\n" % p)
+            out.write("  endloop\n endfacet\n")
+        out.write(f"endsolid {name}\n")
+
+
+if __name__ == "__main__":
+    kind = sys.argv[1]
+    if kind == "icosphere":
+        write_stl(sys.argv[4], *icosphere(int(sys.argv[2]), float(sys.argv[3])), "icosphere")
+    elif kind == "cube":
+        write_stl(sys.argv[4], *cube(int(sys.argv[2]), float(sys.argv[3])), "cube")
+    elif kind == "plane":
+        write_stl(sys.argv[3], *plane(float(sys.argv[2])), "plane")
+    else:
+        sys.exit(__doc__)
