@@ -87,6 +87,7 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
   const bool newton = force->newton_pair;
   const double dt = update->dt;
   double **first_history = listgranhistory ? listgranhistory->firstdouble : nullptr;
+  int **first_touch = listgranhistory ? listgranhistory->firstneigh : nullptr;
   const int dnum = this->dnum();
 
   tasks_.clear();
@@ -99,12 +100,15 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
                    dz = atom->x[i][2] - atom->x[j][2];
       const double reach = atom->radius[i] + atom->radius[j];
       double *history = first_history ? &first_history[i][dnum * jj] : nullptr;
+      int *touching = first_touch ? &first_touch[i][jj] : nullptr;
       if (dx * dx + dy * dy + dz * dz >= reach * reach) {
-        if (history) // apart: the contact, if there was one, has ended
+        if (history) { // apart: the contact, if there was one, has ended
           std::fill(history, history + tri::kHistoryDoubles, 0.0);
+          *touching = 0;
+        }
         continue;
       }
-      tasks_.push_back({i, j, history});
+      tasks_.push_back({i, j, history, touching});
     }
   }
   results_.assign(tasks_.size(), tri::PairForceResult{});
@@ -132,6 +136,9 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
     const Task &t = tasks_[k];
     const tri::PairForceResult &r = results_[k];
     tally_.add(r);
+    if (t.touching)
+      *t.touching = std::any_of(t.history, t.history + tri::kHistoryDoubles,
+                                [](double v) { return v != 0.0; });
     if (r.contacts_after == 0)
       continue;
     for (int d = 0; d < 3; ++d) {

@@ -44,6 +44,7 @@ private:
   struct Task {
     int i, j;
     double *history; // kHistoryDoubles values in LIGGGHTS's contact history, or null
+    int *touching;   // LIGGGHTS keeps (migrates, restarts) the history only where this is set
   };
   class FixTriParticles *particles_ = nullptr;
   tri_liggghts::ContactSettings settings_;
