@@ -2,6 +2,8 @@
 
 #include "error.h"
 
+#include <omp.h>
+
 #include <cstdlib>
 #include <cstring>
 
@@ -33,6 +35,13 @@ int positive_int(const std::string &key, const char *value, LAMMPS_NS::Error *er
 }
 
 } // namespace
+
+int pair_loop_threads(PairLoop loop, std::size_t num_pairs) {
+  if (loop != PairLoop::particle_pairs)
+    return 1;
+  const int max_threads = omp_get_max_threads();
+  return num_pairs >= 8 * static_cast<std::size_t>(max_threads) ? max_threads : 1;
+}
 
 bool parse_contact_keyword(int narg, char **arg, int *i, ContactSettings &s,
                            const std::string &style, LAMMPS_NS::Error *error) {

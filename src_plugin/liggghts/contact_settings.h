@@ -17,6 +17,7 @@
 
 #include "body_interaction.h"
 
+#include <cstddef>
 #include <string>
 
 namespace LAMMPS_NS {
@@ -35,6 +36,11 @@ struct ContactSettings {
 // Consumes the keywords it knows from arg[*i..narg), advancing *i; returns false at the first
 // word it does not know (the caller decides whether that is an error). Bad values are errors
 // naming `style` and the keyword.
+// Threads for the loop over particle pairs: one unless the loop is the parallel level and
+// there are several pairs per thread (a parallel region costs microseconds, and on a busy
+// machine a thread that was descheduled stalls the others at its barrier for milliseconds).
+int pair_loop_threads(PairLoop loop, std::size_t num_pairs);
+
 bool parse_contact_keyword(int narg, char **arg, int *i, ContactSettings &settings,
                            const std::string &style, LAMMPS_NS::Error *error);
 

@@ -113,13 +113,15 @@ void FixTriWall::setup(int) { compute(false); }
 void FixTriWall::post_force(int) { compute(true); }
 
 void FixTriWall::collect_tasks() {
-  tasks_.clear();
+  ntasks_ = 0;
   const int nlocal = atom->nlocal;
   const int *mask = atom->mask;
-  std::vector<std::vector<std::pair<int, int>>> near(nlocal); // atom -> (global id, local tri)
+  std::vector<std::vector<std::pair<int, int>>> &near = near_; // atom -> (global id, local tri)
+  if (static_cast<int>(near.size()) < nlocal)
+    near.resize(nlocal);
   for (std::size_t m = 0; m < meshes_.size(); ++m) {
-    for (auto &v : near)
-      v.clear();
+    for (int a = 0; a < nlocal; ++a)
+      near[a].clear();
     TriMesh *mesh = meshes_[m]->triMesh();
     FixNeighlistMesh *list = meshes_[m]->meshNeighlist();
     const int ntri = mesh->sizeLocal() + mesh->sizeGhost();
@@ -136,10 +138,14 @@ void FixTriWall::collect_tasks() {
       // Ordered by global triangle id, so the result does not depend on how the mesh is
       // split between ranks.
       std::sort(near[a].begin(), near[a].end());
-      Task task{a, static_cast<int>(m), {}};
+      if (ntasks_ == tasks_.size())
+        tasks_.emplace_back();
+      Task &task = tasks_[ntasks_++]; // reused: its triangle list keeps its capacity
+      task.atom = a;
+      task.mesh = static_cast<int>(m);
+      task.triangles.clear();
       for (const auto &p : near[a])
         task.triangles.push_back(p.second);
-      tasks_.push_back(std::move(task));
     }
   }
 }
@@ -206,12 +212,11 @@ void FixTriWall::interact(int k, int thread, double dt, bool update_history) {
 
 void FixTriWall::compute(bool update_history) {
   collect_tasks();
-  const long ntasks = static_cast<long>(tasks_.size());
-  results_.assign(tasks_.size(), tri::PairForceResult{});
-  if (patches_.size() < tasks_.size())
-    patches_.resize(tasks_.size());
-  const int nthreads =
-      settings_.loop == tri_liggghts::PairLoop::particle_pairs ? omp_get_max_threads() : 1;
+  const long ntasks = static_cast<long>(ntasks_);
+  results_.assign(ntasks_, tri::PairForceResult{});
+  if (patches_.size() < ntasks_)
+    patches_.resize(ntasks_);
+  const int nthreads = tri_liggghts::pair_loop_threads(settings_.loop, ntasks_);
   if (static_cast<int>(scratch_.size()) < nthreads)
     scratch_.resize(nthreads);
   thread_tally_.assign(nthreads, tri::InteractionTally{});

@@ -55,7 +55,9 @@ private:
   double epsilon_ = -1.0; // < 0: the particles' epsilon
   double **history_ = nullptr; // per atom: meshes_.size() * kHistoryDoubles
   int values_per_atom_ = 0;
-  std::vector<Task> tasks_;
+  std::vector<Task> tasks_; // the first ntasks_ are this step's
+  std::size_t ntasks_ = 0;
+  std::vector<std::vector<std::pair<int, int>>> near_;
   std::vector<tri::PairForceResult> results_;
   std::vector<tri::TriangleSoA> patches_;
   std::vector<tri::InteractionScratch> scratch_;

@@ -113,7 +113,7 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
   }
   results_.assign(tasks_.size(), tri::PairForceResult{});
 
-  const int nthreads = settings_.loop == tri_liggghts::PairLoop::particle_pairs ? omp_get_max_threads() : 1;
+  const int nthreads = tri_liggghts::pair_loop_threads(settings_.loop, tasks_.size());
   if (static_cast<int>(scratch_.size()) < nthreads)
     scratch_.resize(nthreads);
   thread_tally_.assign(nthreads, tri::InteractionTally{});
