@@ -1,7 +1,5 @@
 #include "compute_tri_stats.h"
 
-#include "step_tally.h"
-
 #include "error.h"
 #include "update.h"
 
@@ -17,6 +15,17 @@ constexpr int kLength = kFixed + tri::kMaxPenaltyIterations + 1;
 
 ComputeTriStats::ComputeTriStats(LAMMPS *lmp, int &iarg, int narg, char **arg)
     : Compute(lmp, iarg, narg, arg) {
+  if (iarg < narg) {
+    const std::string which = arg[iarg++];
+    if (which == "pair")
+      source_ = tri_liggghts::TallySource::pair;
+    else if (which == "wall")
+      source_ = tri_liggghts::TallySource::wall;
+    else if (which != "all") {
+      const std::string msg = "Compute tri/stats: expected all, pair or wall, got '" + which + "'";
+      error->all(FLERR, msg.c_str());
+    }
+  }
   if (iarg < narg) {
     const std::string msg = std::string("Compute tri/stats: unknown keyword '") + arg[iarg] + "'";
     error->all(FLERR, msg.c_str());
@@ -37,7 +46,7 @@ void ComputeTriStats::init() {
 
 void ComputeTriStats::compute_vector() {
   invoked_vector = update->ntimestep;
-  const tri_liggghts::GlobalTally g = tri_liggghts::global_tally(lmp);
+  const tri_liggghts::GlobalTally g = tri_liggghts::global_tally(lmp, source_);
   const tri::InteractionTally &t = g.all;
   const double fixed[kFixed] = {double(t.body_pairs_checked),
                                 double(t.body_pairs_in_contact),

@@ -10,10 +10,14 @@
 //  12.. Newton histogram: 12 + k counts pairs whose k-th penalty step was the first below
 //       tolerance (k = 0: none was), k = 0..32
 //
-//   compute ID all tri/stats
+//   compute ID all tri/stats [all|pair|wall]
+// all (default): pair tri/gran and every fix tri/wall; pair: particle-particle only;
+// wall: particle-wall only.
 #pragma once
 
 #include "compute.h"
+
+#include "step_tally.h"
 
 namespace LAMMPS_NS {
 
@@ -23,6 +27,9 @@ public:
   ~ComputeTriStats() override;
   void init() override;
   void compute_vector() override;
+
+private:
+  tri_liggghts::TallySource source_ = tri_liggghts::TallySource::all;
 };
 
 } // namespace LAMMPS_NS

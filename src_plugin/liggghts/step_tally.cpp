@@ -14,16 +14,18 @@
 
 namespace tri_liggghts {
 
-GlobalTally global_tally(LAMMPS_NS::LAMMPS *lmp) {
+GlobalTally global_tally(LAMMPS_NS::LAMMPS *lmp, TallySource source) {
   GlobalTally g;
   tri::InteractionTally local;
   if (auto *pair = dynamic_cast<LAMMPS_NS::PairTriGran *>(lmp->force->pair)) {
-    local += pair->tally();
+    if (source != TallySource::wall)
+      local += pair->tally();
     g.have_pair = true;
   }
   for (int i = 0; i < lmp->modify->nfix; ++i)
     if (std::strcmp(lmp->modify->fix[i]->style, "tri/wall") == 0) {
-      local += static_cast<LAMMPS_NS::FixTriWall *>(lmp->modify->fix[i])->tally();
+      if (source != TallySource::pair)
+        local += static_cast<LAMMPS_NS::FixTriWall *>(lmp->modify->fix[i])->tally();
       ++g.walls;
     }
 

@@ -17,6 +17,8 @@ struct GlobalTally {
   int walls = 0;          // number of fix tri/wall
 };
 
-GlobalTally global_tally(LAMMPS_NS::LAMMPS *lmp);
+enum class TallySource { all, pair, wall };
+
+GlobalTally global_tally(LAMMPS_NS::LAMMPS *lmp, TallySource source = TallySource::all);
 
 } // namespace tri_liggghts
