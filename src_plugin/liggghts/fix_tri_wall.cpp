@@ -68,6 +68,9 @@ FixTriWall::FixTriWall(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg) 
 
   values_per_atom_ = static_cast<int>(meshes_.size()) * tri::kHistoryDoubles;
   restart_peratom = 1;
+  scalar_flag = 1;
+  extscalar = 0;
+  global_freq = 1;
   grow_arrays(atom->nmax);
   for (int k = 0; k < atom->nmax; ++k)
     std::fill(history_[k], history_[k] + values_per_atom_, 0.0);
@@ -211,6 +214,7 @@ void FixTriWall::interact(int k, int thread, double dt, bool update_history) {
 }
 
 void FixTriWall::compute(bool update_history) {
+  const double start = MPI_Wtime();
   collect_tasks();
   const long ntasks = static_cast<long>(ntasks_);
   results_.assign(ntasks_, tri::PairForceResult{});
@@ -238,6 +242,7 @@ void FixTriWall::compute(bool update_history) {
       torque[a][d] += r.torque_a[d];
     }
   }
+  seconds_ += MPI_Wtime() - start;
 }
 
 /* ---------------- per-atom wall history ---------------- */

@@ -8,7 +8,8 @@
 //   fix ID group tri/wall mesh MESH_ID [MESH_ID ...] [epsilon E] [contact keywords]
 //
 // epsilon: the wall's soft layer (m), default the particles' epsilon. Contact keywords as
-// pair tri/gran (contact_settings.h). The tangential history of each (particle, mesh) pair is
+// pair tri/gran (contact_settings.h). f_ID (a global scalar) is the wall-clock time spent in
+// this fix, for a run's time breakdown. The tangential history of each (particle, mesh) pair is
 // a per-atom array of this fix: migrated with the atom and written to restarts.
 #pragma once
 
@@ -41,6 +42,9 @@ public:
   int maxsize_restart() override;
 
   const tri::InteractionTally &tally() const { return tally_; }
+  // Wall-clock seconds this fix has spent computing forces since the fix was created (for the
+  // time breakdown of a run: LIGGGHTS counts it under "Other"). f_ID in thermo.
+  double compute_scalar() override { return seconds_; }
 
 private:
   struct Task {
@@ -63,6 +67,7 @@ private:
   std::vector<tri::InteractionScratch> scratch_;
   std::vector<tri::InteractionTally> thread_tally_;
   tri::InteractionTally tally_;
+  double seconds_ = 0.0;
 
   void compute(bool update_history);
   void collect_tasks();
