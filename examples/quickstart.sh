@@ -9,7 +9,6 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 exe="$top/build/src_plugin/driver/liggghts-tri"
 
 cd "$top/examples/hopper"
-mkdir -p post
 "$exe" -in in.hopper -var dir .
 
 cd "$top/examples/falling"
