@@ -49,7 +49,8 @@ void PairTriGran::init_granular() {
   materials_.load(lmp, atom->ntypes, settings_.interaction.coefficients, "pair tri/gran");
 }
 
-void PairTriGran::interact(const Task &task, int thread, double dt, bool update_history) {
+void PairTriGran::interact(long k, int thread, double dt, bool update_history) {
+  const Task &task = tasks_[k];
   const int i = task.i, j = task.j;
   auto body = [&](int k) {
     const tri::Shape &shape = particles_->shape(particles_->shape_index(k));
@@ -74,7 +75,7 @@ void PairTriGran::interact(const Task &task, int thread, double dt, bool update_
     std::memcpy(scratch_history, history, sizeof(scratch_history));
     history = scratch_history;
   }
-  results_[&task - tasks_.data()] =
+  results_[k] =
       tri::body_interaction(body(i), body(j), s, dt, history, scratch_[thread],
                             thread_tally_[thread].distance);
 }
@@ -122,10 +123,10 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
   if (settings_.loop == tri_liggghts::PairLoop::particle_pairs) {
 #pragma omp parallel for schedule(dynamic, 4) num_threads(nthreads)
     for (long k = 0; k < ntasks; ++k)
-      interact(tasks_[k], omp_get_thread_num(), dt, update_history);
+      interact(k, omp_get_thread_num(), dt, update_history);
   } else {
     for (long k = 0; k < ntasks; ++k)
-      interact(tasks_[k], 0, dt, update_history);
+      interact(k, 0, dt, update_history);
   }
 
   // One thread, neighbour-list order: the sums do not depend on the thread count.

@@ -55,7 +55,7 @@ private:
   std::vector<tri::InteractionTally> thread_tally_;  // one per thread
   tri::InteractionTally tally_;
 
-  void interact(const Task &task, int thread, double dt, bool update_history);
+  void interact(long k, int thread, double dt, bool update_history); // tasks_[k]
 };
 
 } // namespace LAMMPS_NS
