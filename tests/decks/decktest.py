@@ -8,6 +8,7 @@ import argparse
 import math
 import os
 import shutil
+import struct
 import subprocess
 import sys
 
@@ -25,14 +26,16 @@ def check(cond, message):
         raise Failure(message)
 
 
-def run_deck(ctx, deck, variables=None, ranks=1, expect_ok=True):
-    """Runs one deck in ctx.work; returns the combined screen output."""
+def run_deck(ctx, deck, variables=None, ranks=1, expect_ok=True, env_extra=None):
+    """Runs one deck in ctx.work; returns the combined screen output. `env_extra` adds to (and
+    overrides) the environment, e.g. OMP_NUM_THREADS."""
     cmd = [ctx.exe, "-in", os.path.join(HERE, deck), "-var", "dir", HERE, "-log", "none"]
     for k, v in (variables or {}).items():
         cmd += ["-var", k, str(v)]
     if ranks > 1:
         cmd = ["mpirun", "-np", str(ranks)] + cmd
     env = dict(os.environ, **MPI_ENV)
+    env.update(env_extra or {})
     p = subprocess.run(cmd, cwd=ctx.work, env=env, stdout=subprocess.PIPE,
                        stderr=subprocess.STDOUT, text=True, errors="replace", timeout=600)
     if expect_ok and p.returncode != 0:
@@ -252,6 +255,351 @@ def test_bad_input(ctx):
         else:
             print(f"{name}: {errors[0].strip()}")
     check(not failures, "\n".join(failures))
+
+
+# --------------------------------------------------------------------------------------------
+# Contacts (pair tri/gran, fix tri/wall, compute tri/stats, fix tri/adapt_dt).
+
+MESHGEN = os.path.join(HERE, "..", "..", "validation", "meshes", "meshgen.py")
+EPS = 1e-4            # the particles' soft layer in the contact decks
+SIDE = 0.004          # cube.stl: 2 x 2 squares per face, side 4 mm, centred
+DENSITY = 2500.0
+BOX_HALF, BOX_HEIGHT = 0.0045, 0.02   # box.stl of the cluster decks
+
+
+def f32(v):
+    """VTK's STL reader stores coordinates as float: the mesh is the float-rounded one."""
+    return struct.unpack("f", struct.pack("f", v))[0]
+
+
+def make_contact_meshes(work):
+    subprocess.run([sys.executable, MESHGEN, "cube", "2", repr(SIDE), "cube.stl"], cwd=work,
+                   check=True)
+    subprocess.run([sys.executable, MESHGEN, "plane", "0.01", "plane.stl"], cwd=work, check=True)
+    w, h = BOX_HALF, BOX_HEIGHT
+
+    def quad(a, b, c, d):
+        return [[a, b, c], [a, c, d]]
+    write_stl(os.path.join(work, "box.stl"),
+              quad((-w, -w, 0), (w, -w, 0), (w, w, 0), (-w, w, 0))
+              + quad((-w, -w, 0), (-w, w, 0), (-w, w, h), (-w, -w, h))
+              + quad((w, -w, 0), (w, -w, h), (w, w, h), (w, w, 0))
+              + quad((-w, -w, 0), (-w, -w, h), (w, -w, h), (w, -w, 0))
+              + quad((-w, w, 0), (w, w, 0), (w, w, h), (-w, w, h)))
+
+
+def cross(a, b):
+    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+
+
+def thermo_rows(out):
+    """Every thermo row of a screen output: list of dicts keyed by the header's words."""
+    rows, header = [], None
+    for line in out.splitlines():
+        words = line.split()
+        if words and words[0] == "Step":
+            header = words
+            continue
+        if header and len(words) == len(header):
+            try:
+                rows.append(dict(zip(header, (float(w) for w in words))))
+                continue
+            except ValueError:
+                pass
+        if words and words[0] == "Loop":   # other lines (e.g. tri/adapt_dt's) may interleave
+            header = None
+    return rows
+
+
+# Material of in.contact_pair / in.contact_wall
+MAT = {"kn": 2000.0, "kt": 1000.0, "gamman": 20.0, "gammat": 10.0, "mu": 0.5}
+
+
+def test_contact_forces(ctx):
+    """Forces and torques of one evaluation (run 0) against hand-computed values."""
+    make_contact_meshes(ctx.work)
+    h = f32(SIDE / 2)                   # half side of the mesh as read
+    mass = DENSITY * (2 * h) ** 3
+    kn, kt, gn, gt, mu = (MAT[k] for k in ("kn", "kt", "gamman", "gammat", "mu"))
+    dt = 1e-5
+    # bf: exact geometry, so 1e-12 of the normal force. hybrid: distances within its
+    # documented tolerance 1e-4 * epsilon (particle_contacts.h), so the normal force within
+    # kn * 1e-8 N; the normal is the direction between closest points 1e-4 m apart, each
+    # within 1e-8 m, so lateral force and torque within 1e-4 of F (and F * h).
+    rel = {"bf": 1e-12, "hybrid": 1e-4}
+
+    def pair_case(name, kernel, gap, yb=0.0, vxa=0.0, vxb=0.0, vzb=0.0, gamman=0.0, gammat=0.0):
+        xa, xb = -(h + gap / 2), h + gap / 2
+        v = dict(MAT, xa=repr(xa), xb=repr(xb), yb=repr(yb), vxa=vxa, vxb=vxb, vzb=vzb,
+                 gamman=gamman, gammat=gammat, pairargs=f"kernel {kernel}")
+        run_deck(ctx, "in.contact_pair", v)
+        step, rows = last_frame(os.path.join(ctx.work, "contact.dump"))
+        check(step == 0 and len(rows) == 2, f"{name}: frame at step {step} with {len(rows)} atoms")
+        a, b = ([float(x) for x in rows[t]] for t in (1, 2))
+        check(abs(a[9] - mass) <= 1e-12 * mass, f"{name}: mass {a[9]!r}, cube gives {mass!r}")
+        fa, fb, ta, tb = a[3:6], b[3:6], a[6:9], b[6:9]
+        # Expected (n = +x from a to b): F_n = kn overlap - gamman m_eff v_n on b, friction
+        # from b's sliding along z: history spring kt v dt plus damping, capped by mu F_n.
+        overlap = 2 * EPS - gap
+        if overlap <= 0:
+            fb_exp = [0.0, 0.0, 0.0]
+        else:
+            meff = mass / 2
+            fn = kn * overlap - gamman * meff * (vxb - vxa)
+            ft = kt * abs(vzb) * dt + gammat * meff * abs(vzb)
+            ft = min(ft, mu * fn) * (1 if vzb > 0 else -1 if vzb < 0 else 0)
+            fb_exp = [fn, 0.0, -ft]
+        ylo, yhi = max(-h, yb - h), min(h, yb + h)
+        p = [(xa + xb) / 2, (ylo + yhi) / 2, 0.0]          # centre of the faces' overlap
+        fa_exp = [-c for c in fb_exp]
+        ta_exp = cross([p[0] - xa, p[1], p[2]], fa_exp)
+        tb_exp = cross([p[0] - xb, p[1] - yb, p[2]], fb_exp)
+        scale = max(abs(fb_exp[0]), 1e-300)
+        tol_f, tol_t = rel[kernel] * scale, rel[kernel] * scale * h
+        for k in range(3):
+            check(abs(fb[k] - fb_exp[k]) <= tol_f,
+                  f"{name}: force on b {fb}, hand-computed {fb_exp} (tolerance {tol_f:g} N)")
+            check(fa[k] == -fb[k], f"{name}: forces not opposite: {fa} vs {fb}")
+            check(abs(ta[k] - ta_exp[k]) <= tol_t,
+                  f"{name}: torque on a {ta}, hand-computed {ta_exp} (tolerance {tol_t:g} N m)")
+            check(abs(tb[k] - tb_exp[k]) <= tol_t,
+                  f"{name}: torque on b {tb}, hand-computed {tb_exp} (tolerance {tol_t:g} N m)")
+        print(f"{name}: f_b {fb} (hand {fb_exp}), torque a {ta} (hand {ta_exp})")
+
+    def wall_case(name, kernel, gap, eps_wall=None, vz=0.0, gamman=0.0):
+        zc = h + gap
+        args = f"kernel {kernel}" + (f" epsilon {eps_wall!r}" if eps_wall else "")
+        run_deck(ctx, "in.contact_wall", dict(MAT, zc=repr(zc), vz=vz, gamman=gamman,
+                                               wallargs=args))
+        step, rows = last_frame(os.path.join(ctx.work, "contact.dump"))
+        a = [float(x) for x in rows[1]]
+        f, t = a[3:6], a[6:9]
+        overlap = EPS + (eps_wall or EPS) - gap
+        # n from the particle to the wall is -z; v_n = (v_wall - v) . n = vz; m_eff = m.
+        fz = kn * overlap - gamman * mass * vz if overlap > 0 else 0.0
+        scale = max(fz, 1e-300)
+        tol = rel[kernel] * scale
+        check(abs(f[2] - fz) <= tol and abs(f[0]) <= tol and abs(f[1]) <= tol,
+              f"{name}: wall force {f}, hand-computed (0, 0, {fz!r}) (tolerance {tol:g} N)")
+        check(all(abs(c) <= tol * h for c in t), f"{name}: torque {t} on a centred cube")
+        print(f"{name}: f {f} (hand fz {fz!r}), torque {t}")
+
+    pair_case("pair_rest_bf", "bf", gap=1e-4)
+    pair_case("pair_rest_hybrid", "hybrid", gap=1e-4)
+    pair_case("pair_apart_bf", "bf", gap=2.5e-4)
+    pair_case("pair_approach_damped_bf", "bf", gap=1e-4, vxa=0.1, vxb=-0.1, gamman=gn)
+    pair_case("pair_offset_bf", "bf", gap=1e-4, yb=0.001)
+    pair_case("pair_sliding_bf", "bf", gap=1.2e-4, vzb=1.0, gamman=gn, gammat=gt)
+    pair_case("pair_sliding_coulomb_bf", "bf", gap=1e-4, yb=0.0005, vzb=20.0, gammat=gt)
+    wall_case("wall_eps_bf", "bf", gap=1e-4, eps_wall=5e-5)
+    wall_case("wall_default_eps_bf", "bf", gap=1e-4)
+    wall_case("wall_approach_hybrid", "hybrid", gap=1e-4, eps_wall=5e-5, vz=-0.1, gamman=gn)
+    wall_case("wall_apart_bf", "bf", gap=2e-4, eps_wall=5e-5)
+
+
+CLUSTER_OUT = ("cluster_{}.dump")
+
+
+def cluster_contacts(out):
+    rows = thermo_rows(out)
+    check(rows, "no thermo rows in the cluster output")
+    return max(r["stats[2]"] for r in rows)
+
+
+def test_threads(ctx):
+    """The cluster with 1 and 2 OpenMP threads, parallel pairs and parallel triangles: the
+    final dumps (%.17g) must be identical."""
+    make_contact_meshes(ctx.work)
+    dumps = {}
+    for loop in ("pairs", "triangles"):
+        for threads in (1, 2):
+            phase = f"{loop}_t{threads}"
+            _, out = run_deck(ctx, "in.contact_cluster",
+                              {"phase": phase, "nsteps": 2000, "pairargs": f"parallel {loop}"},
+                              env_extra={"OMP_NUM_THREADS": str(threads)})
+            check(cluster_contacts(out) > 0, f"{phase}: no contacts in the cluster")
+            step, dumps[phase] = last_frame(os.path.join(ctx.work, CLUSTER_OUT.format(phase)))
+            check(step == 2000 and len(dumps[phase]) == 8, f"{phase}: step {step}, "
+                  f"{len(dumps[phase])} atoms")
+    ref = dumps["pairs_t1"]
+    for phase, rows in dumps.items():
+        for tag in ref:
+            check(rows[tag] == ref[tag], f"atom {tag}: {phase} differs from pairs_t1:\n "
+                  f"{rows[tag]}\n {ref[tag]}")
+
+
+def test_restart_contacts(ctx):
+    """2N steps against N + write_restart + (new process) read_restart + N, with rock-rock
+    and rock-wall contacts (tangential history) active at the restart step."""
+    make_contact_meshes(ctx.work)
+    n = 2000
+    run_deck(ctx, "in.contact_cluster", {"phase": "full", "nsteps": 2 * n})
+    _, out = run_deck(ctx, "in.contact_cluster_restart",
+                      {"phase": "first", "nsteps": n, "thermo_every": n})
+    run_deck(ctx, "in.contact_cluster_resume", {"phase": "second", "nsteps": n})
+    at_n = [r for r in thermo_rows(out) if r["Step"] == n]
+    check(len(at_n) == 2, f"expected two thermo rows at step {n}, got {at_n}")
+    total, pairs_only = at_n[0]["stats[2]"], at_n[1]["stats[2]"]
+    print(f"at the restart step: {total:g} contacts, {pairs_only:g} of them rock-rock")
+    check(pairs_only > 0, "no rock-rock contact at the restart step: the test would not see "
+                          "the pair history")
+    check(total - pairs_only > 0, "no rock-wall contact at the restart step")
+    _, full = last_frame(os.path.join(ctx.work, CLUSTER_OUT.format("full")))
+    _, resumed = last_frame(os.path.join(ctx.work, CLUSTER_OUT.format("second")))
+    first_diff = [t for t in full if full[t] != resumed[t]]
+    check(not first_diff, f"atoms {first_diff} differ after the restart, e.g. atom "
+          f"{first_diff[:1]}:\n {full[first_diff[0]] if first_diff else ''}\n "
+          f"{resumed[first_diff[0]] if first_diff else ''}")
+
+
+def compare_columns(serial, mpi, tol, what):
+    """Largest difference per column relative to the column's largest magnitude; checks tol."""
+    worst = 0.0
+    ncol = len(next(iter(serial.values())))
+    for k in range(ncol):
+        scale = max(abs(float(r[k])) for r in serial.values())
+        for tag in serial:
+            d = abs(float(serial[tag][k]) - float(mpi[tag][k]))
+            r = d / scale if scale > 0 else d
+            worst = max(worst, r)
+            check(r <= tol, f"{what}: atom {tag} column {k + 1}: 1 rank {serial[tag][k]}, "
+                            f"2 ranks {mpi[tag][k]} (relative {r:.3g} > {tol:g})")
+    return worst
+
+
+def test_ranks_contacts(ctx):
+    """1 and 2 MPI ranks (processors 2 1 1, boundary x = 0): a colliding pair across the
+    boundary and the cluster. Not bitwise: the rank that owns j evaluates the pair as (j, i),
+    and body_interaction(j, i) equals -body_interaction(i, j) only to rounding (measured 1e-15
+    relative after one collision); in the cluster the order of the force sums on an atom
+    differs too. Chaotic collisions amplify that, so the runs are short and the kernel of the
+    cluster is brute force: the hybrid kernel's accept/fallback decision can flip on a
+    last-bit difference and then moves a distance by up to its tolerance 1e-4 eps (measured:
+    1e-14 -> 4e-9 in one collision at step 1200). Tolerance: 1e-10 of each column's largest
+    magnitude."""
+    make_contact_meshes(ctx.work)
+    tol = 1e-10
+    outs = {}
+    for ranks in (1, 2):
+        phase = "serial" if ranks == 1 else "mpi"
+        run_deck(ctx, "in.contact_collide", {"px": ranks, "phase": phase}, ranks=ranks)
+        with open(os.path.join(ctx.work, f"touch_{phase}.txt")) as f:
+            touching = sum(1 for l in f if l.startswith("touch") and float(l.split()[1]) > 0)
+        check(touching > 10, f"collide, {ranks} ranks: in contact on {touching} steps only")
+        _, outs[("collide", ranks)] = last_frame(os.path.join(ctx.work, f"collide_{phase}.dump"))
+        _, out = run_deck(ctx, "in.contact_cluster",
+                          {"px": ranks, "phase": phase, "nsteps": 1500, "pairargs": "kernel bf"},
+                          ranks=ranks)
+        check(cluster_contacts(out) > 0, f"cluster, {ranks} ranks: no contacts")
+        _, outs[("cluster", ranks)] = last_frame(os.path.join(ctx.work, CLUSTER_OUT.format(phase)))
+    _, first = first_frame(os.path.join(ctx.work, "collide_serial.dump"))
+    check(float(first[1][0]) < 0 < float(first[2][0]), "the pair does not start on both ranks")
+    for what, natoms in (("collide", 2), ("cluster", 8)):
+        serial, mpi = outs[(what, 1)], outs[(what, 2)]
+        check(len(serial) == len(mpi) == natoms, f"{what}: atoms were lost")
+        sides = {float(r[0]) < 0 for r in serial.values()}
+        bitwise = all(serial[t] == mpi[t] for t in serial)
+        worst = compare_columns(serial, mpi, tol, what)
+        print(f"{what}: 1 vs 2 ranks {'bitwise equal' if bitwise else 'not bitwise'}, "
+              f"largest relative difference {worst:.3g} (tolerance {tol:g}); atoms on "
+              f"{len(sides)} sides of x = 0 at the end")
+
+
+BAD_CONTACT = {
+    "pair_without_particles": ({"particles": "variable nothing equal 0"},
+                               r"Pair tri/gran requires fix tri/particles"),
+    "missing_kt": ({"ktname": "ktx"},
+                   r"Could not locate a fix/property storing value\(s\) for kt "),
+    "wall_not_a_mesh": ({"wall": "fix walls all tri/wall mesh grav"},
+                        r"tri/wall: fix 'grav' is not a fix mesh/surface"),
+    "wall_unknown_id": ({"wall": "fix walls all tri/wall mesh nosuch"},
+                        r"tri/wall: 'mesh' must name at least one fix mesh/surface, got 'nosuch'"),
+    "adapt_dt_min_above_max": ({"extra": "fix adt all tri/adapt_dt dtmax 1e-6 dtmin 1e-5"},
+                               r"tri/adapt_dt: dtmin must not exceed dtmax"),
+    "pair_unknown_keyword": ({"pairstyle": "tri/gran colour red"},
+                             r"Pair tri/gran: unknown keyword 'colour'"),
+    "pair_bad_kernel": ({"pairstyle": "tri/gran kernel fast"},
+                        r"Pair tri/gran: 'kernel' expects bf, penalty, hybrid or batched, got 'fast'"),
+    "pair_newton_iters": ({"pairstyle": "tri/gran newton_iters 9"},
+                          r"'newton_iters 9' is not one of the compiled iteration counts"),
+    "pair_newton_on": ({"newton": "on off"},
+                       r"Pair granular with shear history requires newton pair off"),
+}
+
+
+def test_bad_contact_input(ctx):
+    import re
+    make_contact_meshes(ctx.work)
+    # The deck with no line swapped runs: each error below comes from its one changed line.
+    run_deck(ctx, "in.contact_bad")
+    failures = []
+    for name, (variables, pattern) in sorted(BAD_CONTACT.items()):
+        code, out = run_deck(ctx, "in.contact_bad", variables, expect_ok=False)
+        errors = [l for l in out.splitlines() if "ERROR" in l]
+        if code == 0 or not errors or not re.search(pattern, " ".join(errors)):
+            failures.append(f"{name}: exit {code}, errors {errors or out[-800:]!r}, wanted /{pattern}/")
+        elif any(s in out for s in ("Segmentation", "signal", "core dumped")):
+            failures.append(f"{name}: crashed instead of a clean error")
+        else:
+            print(f"{name}: {errors[0].strip()}")
+    check(not failures, "\n".join(failures))
+
+
+def test_stats_and_adapt_dt(ctx):
+    """compute tri/stats in thermo and fix tri/adapt_dt's rule on two approaching cubes."""
+    import re
+    make_contact_meshes(ctx.work)
+    dtmax, dtmin, fraction = 2e-6, 2.5e-7, 0.2
+    _, out = run_deck(ctx, "in.contact_adapt")
+    rows = thermo_rows(out)
+    check(len(rows) > 100, f"{len(rows)} thermo rows")
+    for r in rows:
+        check(r["stats[6]"] <= r["stats[5]"], f"step {r['Step']:g}: {r['stats[6]']:g} contacts "
+              f"after reduction > {r['stats[5]']:g} before")
+        check(dtmin * (1 - 1e-12) <= r["adt[1]"] <= dtmax * (1 + 1e-12),
+              f"step {r['Step']:g}: dt {r['adt[1]']!r} outside [dtmin, dtmax]")
+    touching = [r for r in rows if r["stats[2]"] > 0]
+    check(touching, "the cubes never touched")
+    check(all(r["stats[1]"] > 0 and r["stats[3]"] > 0 for r in touching),
+          "pairs in contact without particle pairs checked or triangle pairs tested")
+    check(max(r["stats[5]"] for r in touching) > max(r["stats[6]"] for r in touching) == 1,
+          "two touching faces did not reduce to one contact point")
+    check(min(r["dmin"] for r in touching) < fraction * EPS,
+          "the cubes never came closer than 0.2 epsilon")
+    check(rows[-1]["stats[2]"] == 0, "the cubes did not separate")
+    lines = re.findall(r"tri/adapt_dt: step (\d+): dt (\S+) -> (\S+) \((.*)\)", out)
+    check(lines, "fix tri/adapt_dt printed no change")
+    growths = halvings = 0
+    by_step = {int(r["Step"]): r for r in rows}
+    for step, a, b, why in lines:
+        a, b = float(a), float(b)
+        if why == "no contact":
+            growths += 1
+            check(abs(b - min(1.1 * a, dtmax)) <= 1e-5 * b, f"step {step}: {a} -> {b} is not "
+                  "a 10% growth bounded by dtmax")
+        elif why.startswith("a contact closer"):
+            halvings += 1
+            check(abs(b - max(0.5 * a, dtmin)) <= 1e-5 * b, f"step {step}: {a} -> {b} is not "
+                  "a halving bounded by dtmin")
+            r = by_step.get(int(step))
+            check(r is None or r["dmin"] < fraction * EPS,
+                  f"step {step}: halved with the closest distance {r and r['dmin']}")
+        else:
+            raise Failure(f"unexpected reason '{why}'")
+    check(halvings >= 3 and growths >= 8, f"{halvings} halvings, {growths} growths")
+    check(any(float(b) == dtmax for _, _, b, w in lines if w == "no contact"),
+          "dt never reached dtmax")
+    check(any(float(b) == dtmin for _, _, b, w in lines if w != "no contact"),
+          "dt never reached dtmin")
+    # After the contact: growth again up to dtmax.
+    last_halving = max(int(s) for s, _, _, w in lines if w != "no contact")
+    check(any(int(s) > last_halving and w == "no contact" for s, _, _, w in lines),
+          "dt did not grow again once the cubes separated")
+    check(rows[-1]["adt[1]"] == dtmax, f"final dt {rows[-1]['adt[1]']!r}, expected dtmax")
+    print(f"{halvings} halvings, {growths} growths; closest distance "
+          f"{min(r['dmin'] for r in touching):.4g} m; contacts before/after reduction "
+          f"up to {max(r['stats[5]'] for r in touching):g}/"
+          f"{max(r['stats[6]'] for r in touching):g}")
 
 
 TESTS = {name[5:]: fn for name, fn in globals().items() if name.startswith("test_")}
