@@ -75,6 +75,8 @@ void FixTriNVE::initial_integrate(int) {
   for (int i = 0; i < nlocal; ++i) {
     if (!(mask[i] & groupbit))
       continue;
+    // Right after read_restart: the forces of the step the file was written at.
+    particles_->take_restored_force_and_torque(i, f[i], atom->torque[i]);
     const double dtfm = dtf_ / rmass[i];
     for (int k = 0; k < 3; ++k) {
       v[i][k] += dtfm * f[i][k];

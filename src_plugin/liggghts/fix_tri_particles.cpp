@@ -28,7 +28,8 @@ using namespace FixConst;
 namespace {
 
 // state_ columns
-constexpr int kShape = 0, kQuat = 1, kAngmom = 5;
+constexpr int kShape = 0, kQuat = 1, kAngmom = 5, kRestartForce = 8, kRestartTorque = 11,
+              kRestartPending = 14;
 constexpr double kUnset = -1.0;
 
 tri::Shape build_shape(const tri_liggghts::ShapeSpec &spec) {
@@ -143,6 +144,7 @@ void FixTriParticles::initialise_atom(int i) {
       orient_random_ ? tri::random_orientation(orient_seed_, tag) : Eigen::Quaterniond::Identity();
   set_orientation(i, q);
   set_angular_momentum(i, Eigen::Vector3d::Zero());
+  std::fill(state_[i] + kValues, state_[i] + kStored, 0.0);
 }
 
 int FixTriParticles::initialise_unset_atoms() {
@@ -228,12 +230,12 @@ Eigen::Vector3d FixTriParticles::principal_inertia(int i) const {
 /* ---------------- per-atom storage: the LIGGGHTS callbacks ---------------- */
 
 void FixTriParticles::grow_arrays(int nmax) {
-  memory->grow(state_, nmax, kValues, "tri/particles:state");
+  memory->grow(state_, nmax, kStored, "tri/particles:state");
   array_atom = state_;
 }
 
 void FixTriParticles::copy_arrays(int i, int j, int) {
-  std::memcpy(state_[j], state_[i], kValues * sizeof(double));
+  std::memcpy(state_[j], state_[i], kStored * sizeof(double));
 }
 
 void FixTriParticles::set_arrays(int i) {
@@ -248,16 +250,17 @@ void FixTriParticles::set_arrays(int i) {
   state_[i][kShape] = kUnset;
   set_orientation(i, Eigen::Quaterniond::Identity());
   set_angular_momentum(i, Eigen::Vector3d::Zero());
+  std::fill(state_[i] + kValues, state_[i] + kStored, 0.0);
 }
 
 int FixTriParticles::pack_exchange(int i, double *buf) {
-  std::memcpy(buf, state_[i], kValues * sizeof(double));
-  return kValues;
+  std::memcpy(buf, state_[i], kStored * sizeof(double));
+  return kStored;
 }
 
 int FixTriParticles::unpack_exchange(int nlocal, double *buf) {
-  std::memcpy(state_[nlocal], buf, kValues * sizeof(double));
-  return kValues;
+  std::memcpy(state_[nlocal], buf, kStored * sizeof(double));
+  return kStored;
 }
 
 int FixTriParticles::pack_border(int n, int *list, double *buf) {
@@ -296,9 +299,14 @@ void FixTriParticles::unpack_comm(int n, int first, double *buf) {
 }
 
 int FixTriParticles::pack_restart(int i, double *buf) {
-  buf[0] = kValues + 1;
+  buf[0] = kStored + 1;
   std::memcpy(buf + 1, state_[i], kValues * sizeof(double));
-  return kValues + 1;
+  for (int k = 0; k < 3; ++k) {
+    buf[1 + kRestartForce + k] = atom->f[i][k];
+    buf[1 + kRestartTorque + k] = atom->torque[i][k];
+  }
+  buf[1 + kRestartPending] = 1.0;
+  return kStored + 1;
 }
 
 void FixTriParticles::unpack_restart(int nlocal, int nth) {
@@ -306,11 +314,23 @@ void FixTriParticles::unpack_restart(int nlocal, int nth) {
   int m = 0;
   for (int k = 0; k < nth; ++k)
     m += static_cast<int>(extra[nlocal][m]);
-  std::memcpy(state_[nlocal], &extra[nlocal][m + 1], kValues * sizeof(double));
+  std::memcpy(state_[nlocal], &extra[nlocal][m + 1], kStored * sizeof(double));
 }
 
-int FixTriParticles::size_restart(int) { return kValues + 1; }
-int FixTriParticles::maxsize_restart() { return kValues + 1; }
+int FixTriParticles::size_restart(int) { return kStored + 1; }
+int FixTriParticles::maxsize_restart() { return kStored + 1; }
+
+bool FixTriParticles::take_restored_force_and_torque(int i, double *f, double *torque) {
+  double *s = state_[i];
+  if (s[kRestartPending] != 1.0)
+    return false;
+  for (int k = 0; k < 3; ++k) {
+    f[k] = s[kRestartForce + k];
+    torque[k] = s[kRestartTorque + k];
+  }
+  s[kRestartPending] = 0.0;
+  return true;
+}
 
 // The shapes themselves are rebuilt from the deck; the restart file keeps a fingerprint so a
 // deck whose shapes differ from the run that wrote the restart is refused.
@@ -351,7 +371,7 @@ double FixTriParticles::max_rad(int type) {
 }
 
 double FixTriParticles::memory_usage() {
-  double bytes = static_cast<double>(atom->nmax) * kValues * sizeof(double);
+  double bytes = static_cast<double>(atom->nmax) * kStored * sizeof(double);
   for (const tri::TriangleSoA &w : world_)
     bytes += 3.0 * w.x.capacity() * sizeof(double) + sizeof(w);
   return bytes;

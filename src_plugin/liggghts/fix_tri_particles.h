@@ -23,7 +23,10 @@ namespace LAMMPS_NS {
 
 class FixTriParticles : public Fix {
 public:
-  static constexpr int kValues = 8; // shape, q(4), L(3)
+  static constexpr int kValues = 8; // shape, q(4), L(3): what dumps see as f_ID[1..8]
+  // Stored per atom after those: the force and torque of the step a restart file was written
+  // at, and a flag that they are pending (see restored_force_and_torque).
+  static constexpr int kStored = kValues + 7;
 
   FixTriParticles(class LAMMPS *, int, char **);
   ~FixTriParticles() override;
@@ -59,6 +62,12 @@ public:
   void set_orientation(int i, const Eigen::Quaterniond &q);
   Eigen::Vector3d angular_momentum(int i) const;
   void set_angular_momentum(int i, const Eigen::Vector3d &L);
+  // A continuous run starts step N+1 with the forces of step N, which depend on the half-step
+  // velocity v(N - 1/2); a run continued from a restart file can only recompute them from
+  // v(N). So the restart file carries the step-N force and torque of each particle, and the
+  // first time integration after read_restart takes them from here (once; true if it did),
+  // which makes "N steps + restart + N steps" bitwise equal to "2N steps".
+  bool take_restored_force_and_torque(int i, double *f, double *torque);
   // Principal moments of atom i, kg m^2, scaled with its rmass (so `set mass` stays consistent).
   Eigen::Vector3d principal_inertia(int i) const;
   double epsilon() const { return epsilon_; }
