@@ -205,6 +205,8 @@ def make_bad_meshes(work):
     write_stl(os.path.join(work, "open.stl"), cube()[:-1])
     write_stl(os.path.join(work, "flipped.stl"), [t[0], t[1], t[2], [t[3][0], t[3][2], t[3][1]]])
     write_stl(os.path.join(work, "inverted.stl"), [[x[0], x[2], x[1]] for x in t])
+    a, b = (0, 0, 0), (0.002, 0, 0)
+    write_stl(os.path.join(work, "degenerate.stl"), t[:3] + [[a, b, (0.001, 0, 0)]])
     write_stl(os.path.join(work, "nan.stl"), [[("nan", 0, 0)] + t[0][1:]] + t[1:])
     with open(os.path.join(work, "garbage.stl"), "w") as f:
         f.write("solid x\n facet normal 0 0 1\n  outer loop\n   vertex 0 0\n")
@@ -222,6 +224,7 @@ BAD_INPUT = {
     "open_mesh": (f"shape m file open.stl {TAIL}", r"open\.stl.*not closed"),
     "flipped_mesh": (f"shape m file flipped.stl {TAIL}", r"flipped\.stl.*orient"),
     "inverted_mesh": (f"shape m file inverted.stl {TAIL}", r"inverted\.stl.*(inverted|inward|negative)"),
+    "degenerate_mesh": (f"shape m file degenerate.stl {TAIL}", r"degenerate\.stl.*degenerate"),
     "nan_mesh": (f"shape m file nan.stl {TAIL}", r"nan\.stl.*(NaN|finite|nan)"),
     "odd_ntri": (f"shape r random ntri 21 size 0.004 seed 1 {TAIL}", r"ntri.*even"),
     "small_ntri": (f"shape r random ntri 2 size 0.004 seed 1 {TAIL}", r"ntri"),
