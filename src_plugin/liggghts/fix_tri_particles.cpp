@@ -8,6 +8,8 @@
 #include "seeded_random.h"
 #include "shape_error.h"
 
+#include "peratom_restart.h"
+
 #include "atom.h"
 #include "comm.h"
 #include "domain.h"
@@ -197,6 +199,20 @@ void FixTriParticles::update_world_triangles(int n) {
   }
 }
 
+tri::Body FixTriParticles::body(int i) const {
+  const tri::Shape &s = shapes_[shape_index(i)];
+  tri::Body b;
+  b.triangles = &world_[i];
+  b.epsilon = epsilon_;
+  b.longest_edge = s.max_edge_length;
+  b.min_edge = s.min_edge_length;
+  b.state.x = Eigen::Vector3d(atom->x[i][0], atom->x[i][1], atom->x[i][2]);
+  b.state.v = Eigen::Vector3d(atom->v[i][0], atom->v[i][1], atom->v[i][2]);
+  b.state.omega = Eigen::Vector3d(atom->omega[i][0], atom->omega[i][1], atom->omega[i][2]);
+  b.state.mass = atom->rmass[i];
+  return b;
+}
+
 Eigen::Quaterniond FixTriParticles::orientation(int i) const {
   const double *q = state_[i] + kQuat;
   return Eigen::Quaterniond(q[0], q[1], q[2], q[3]);
@@ -310,11 +326,8 @@ int FixTriParticles::pack_restart(int i, double *buf) {
 }
 
 void FixTriParticles::unpack_restart(int nlocal, int nth) {
-  double **extra = atom->extra;
-  int m = 0;
-  for (int k = 0; k < nth; ++k)
-    m += static_cast<int>(extra[nlocal][m]);
-  std::memcpy(state_[nlocal], &extra[nlocal][m + 1], kStored * sizeof(double));
+  std::memcpy(state_[nlocal], tri_liggghts::restart_record(atom->extra, nlocal, nth),
+              kStored * sizeof(double));
 }
 
 int FixTriParticles::size_restart(int) { return kStored + 1; }

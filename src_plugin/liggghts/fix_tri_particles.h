@@ -12,6 +12,7 @@
 
 #include "fix.h"
 
+#include "body_interaction.h"
 #include "shape.h"
 #include "triangle_soa.h"
 
@@ -73,6 +74,9 @@ public:
   double epsilon() const { return epsilon_; }
   // World-frame triangles of owned and ghost atom i, as of the last pre_force.
   const tri::TriangleSoA &world_triangles(int i) const { return world_[i]; }
+  // Atom i (owned or ghost) as the contact kernel sees it: its world-frame triangles, soft
+  // layer, edge lengths, and x, v, omega, rmass.
+  tri::Body body(int i) const;
   // Recomputes world-frame triangles of atoms [0, n) from x and the quaternions.
   void update_world_triangles(int n);
 

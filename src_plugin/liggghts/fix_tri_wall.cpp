@@ -2,6 +2,8 @@
 
 #include "fix_tri_particles.h"
 
+#include "peratom_restart.h"
+
 #include "atom.h"
 #include "error.h"
 #include "fix_mesh_surface.h"
@@ -176,16 +178,7 @@ void FixTriWall::interact(int k, int thread, double dt, bool update_history) {
     }
   const double corners = 3.0 * static_cast<double>(task.triangles.size());
 
-  const tri::Shape &shape = particles_->shape(particles_->shape_index(a));
-  tri::Body particle;
-  particle.triangles = &particles_->world_triangles(a);
-  particle.epsilon = particles_->epsilon();
-  particle.longest_edge = shape.max_edge_length;
-  particle.min_edge = shape.min_edge_length;
-  particle.state.x = Eigen::Vector3d(atom->x[a][0], atom->x[a][1], atom->x[a][2]);
-  particle.state.v = Eigen::Vector3d(atom->v[a][0], atom->v[a][1], atom->v[a][2]);
-  particle.state.omega = Eigen::Vector3d(atom->omega[a][0], atom->omega[a][1], atom->omega[a][2]);
-  particle.state.mass = atom->rmass[a];
+  const tri::Body particle = particles_->body(a);
 
   // A wall is a body of infinite mass. Its velocity is the mean of the patch's node
   // velocities (exact for a translating mesh; for a rotating one, the patch is a
@@ -194,7 +187,7 @@ void FixTriWall::interact(int k, int thread, double dt, bool update_history) {
   wall.triangles = &patch;
   wall.epsilon = epsilon_;
   wall.longest_edge = std::numeric_limits<double>::infinity();
-  wall.min_edge = shape.min_edge_length;
+  wall.min_edge = particle.min_edge;
   wall.state.x = centroid / corners;
   wall.state.v = velocity / corners;
   wall.state.mass = 0.0;
@@ -272,11 +265,8 @@ int FixTriWall::pack_restart(int i, double *buf) {
 }
 
 void FixTriWall::unpack_restart(int nlocal, int nth) {
-  double **extra = atom->extra;
-  int m = 0;
-  for (int k = 0; k < nth; ++k)
-    m += static_cast<int>(extra[nlocal][m]);
-  std::memcpy(history_[nlocal], &extra[nlocal][m + 1], values_per_atom_ * sizeof(double));
+  std::memcpy(history_[nlocal], tri_liggghts::restart_record(atom->extra, nlocal, nth),
+              values_per_atom_ * sizeof(double));
 }
 
 int FixTriWall::size_restart(int) { return values_per_atom_ + 1; }

@@ -52,19 +52,6 @@ void PairTriGran::init_granular() {
 void PairTriGran::interact(long k, int thread, double dt, bool update_history) {
   const Task &task = tasks_[k];
   const int i = task.i, j = task.j;
-  auto body = [&](int k) {
-    const tri::Shape &shape = particles_->shape(particles_->shape_index(k));
-    tri::Body b;
-    b.triangles = &particles_->world_triangles(k);
-    b.epsilon = particles_->epsilon();
-    b.longest_edge = shape.max_edge_length;
-    b.min_edge = shape.min_edge_length;
-    b.state.x = Eigen::Vector3d(atom->x[k][0], atom->x[k][1], atom->x[k][2]);
-    b.state.v = Eigen::Vector3d(atom->v[k][0], atom->v[k][1], atom->v[k][2]);
-    b.state.omega = Eigen::Vector3d(atom->omega[k][0], atom->omega[k][1], atom->omega[k][2]);
-    b.state.mass = atom->rmass[k];
-    return b;
-  };
   tri::InteractionSettings s = settings_.interaction;
   s.coefficients = materials_.get(atom->type[i], atom->type[j]);
   // During setup LIGGGHTS evaluates forces without advancing the history (shearupdate off),
@@ -76,7 +63,7 @@ void PairTriGran::interact(long k, int thread, double dt, bool update_history) {
     history = scratch_history;
   }
   results_[k] =
-      tri::body_interaction(body(i), body(j), s, dt, history, scratch_[thread],
+      tri::body_interaction(particles_->body(i), particles_->body(j), s, dt, history, scratch_[thread],
                             thread_tally_[thread].distance);
 }
 
