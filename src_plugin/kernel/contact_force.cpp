@@ -49,6 +49,13 @@ PairForceResult pair_contact_force(const std::vector<ContactPoint> &contacts, co
     r.force_a -= f_b;
     r.torque_a -= (c.point - a.x).cross(f_b);
     r.torque_b += (c.point - b.x).cross(f_b);
+    if (c.patch_area > 0.0) {
+      const Vector3d couple_b = rocking_couple(coeff, c.normal, c.patch_area,
+                                               c.patch_second_moment, b.omega - a.omega, f_n,
+                                               m_eff);
+      r.torque_a -= couple_b;
+      r.torque_b += couple_b;
+    }
     r.contacts_before += c.num_merged;
     r.max_overlap = std::max(r.max_overlap, c.overlap);
     r.min_distance = std::min(r.min_distance, c.min_distance);

@@ -6,8 +6,12 @@
 // Per contact point p with normal n and overlap delta:
 //   kinematics at p (rotation included), F_n = normal_force(...), F_t = tangential sub-model,
 //   F_b = F_n n + F_t (on b), F_a = -F_b; torque_a += (p - x_a) x F_a, torque_b += (p - x_b) x
-//   F_b, friction included. Hence F_a + F_b = 0 and total angular momentum is conserved about
-//   any point: (x_a - o) x F_a + torque_a + (x_b - o) x F_b + torque_b = 0 (to rounding).
+//   F_b, friction included; for a face contact (patch_area > 0) also the rocking damper's
+//   couple C_b = rocking_couple(..., omega_b - omega_a, F_n, ...): torque_b += C_b,
+//   torque_a -= C_b (contact_model.h: a pure couple that dissipates the relative rocking a
+//   single force point cannot see). Hence F_a + F_b = 0 and total angular momentum is
+//   conserved about any point: (x_a - o) x F_a + torque_a + (x_b - o) x F_b + torque_b = 0
+//   (to rounding).
 // Statistics are returned, never kept.
 #pragma once
 

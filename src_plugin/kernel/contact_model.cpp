@@ -57,8 +57,31 @@ Vector3d tangential_force_history(const ContactCoefficients &c, const Vector3d &
   } else if (c.tangential_damping) {
     const double gamma = c.absolute_damping ? c.gammat : c.gammat * m_eff;
     f_t -= gamma * v_t;
+    // Unlike LIGGGHTS: the damped total obeys Coulomb too (header); the shear stays.
+    const double f_total = f_t.norm();
+    if (f_total > f_friction)
+      f_t *= f_friction / f_total;
   }
   return f_t;
+}
+
+Vector3d rocking_couple(const ContactCoefficients &c, const Vector3d &n, double patch_area,
+                        const Eigen::Matrix3d &patch_second_moment, const Vector3d &omega_rel,
+                        double f_n, double m_eff) {
+  const double gamma = c.absolute_damping ? c.gamman : c.gamman * m_eff;
+  if (!(patch_area > 0.0) || !(gamma > 0.0))
+    return Vector3d::Zero();
+  const double polar = patch_second_moment.trace();
+  const Eigen::Matrix3d k =
+      polar * (Eigen::Matrix3d::Identity() - n * n.transpose()) - patch_second_moment;
+  Vector3d tau = -(gamma / patch_area) * (k * omega_rel);
+  if (c.limit_force) {
+    const double cap = std::abs(f_n) * std::sqrt(2.0 * std::max(0.0, polar) / patch_area);
+    const double size = tau.norm();
+    if (size > cap)
+      tau *= size > 0.0 ? cap / size : 0.0;
+  }
+  return tau;
 }
 
 Vector3d tangential_force_no_history(const ContactCoefficients &c, const Vector3d &v_t, double f_n,

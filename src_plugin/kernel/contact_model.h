@@ -14,6 +14,22 @@
 //   its negative. F_t is computed from b's relative motion, so it opposes v_t.
 //
 // Adding a sub-model: one function here, one enum value, one case in contact_force.cpp.
+//
+// Two deliberate departures from LIGGGHTS, both for contacts of flat faces, which spheres
+// never have (each is a no-op for a sphere-like point contact at rest in the sense stated):
+// - tangential_force_history caps the TOTAL tangential force (spring + damping) at mu |F_n|.
+//   LIGGGHTS caps only the spring and adds -gamma_t v_t on top whenever the spring is below
+//   the limit, so the total can exceed Coulomb. For spheres that hardly matters; for a face
+//   contact that rocks (v_t at the contact point reverses with every rock, putting it back in
+//   the sticking branch at full relative speed) the total reached 1.3 to 4 times F_n (2.6 to 8
+//   times mu F_n) in edge impacts, braking a cube that should slide (validation/contact/
+//   friction: 0.755 instead of 1.609 m/s^2 at 35 degrees, mu = 0.5). A tangential force above
+//   mu |F_n| is not Coulomb friction: the spring and its damper act in parallel behind the
+//   Coulomb slider, which cannot transmit more than mu |F_n| whatever drives it. The cap
+//   changes nothing while the total is below mu |F_n|, i.e. for every sticking contact.
+// - rocking_couple: a damping couple against the relative rotation about axes in the contact
+//   plane, for contacts with an extent (patch_area > 0). LIGGGHTS has no such term (its
+//   contacts are points).
 #pragma once
 
 #include <Eigen/Core>
@@ -60,7 +76,11 @@ double normal_force(const ContactCoefficients &c, double overlap, double v_n, do
 // place:  shear += v_t dt;  shear -= (shear . n) n  (onto the current tangent plane);
 // F_t = -kt shear; if |F_t| > mu |F_n|: F_t *= mu |F_n| / |F_t| and shear = -F_t / kt
 // (Coulomb cap; F_t = 0 if shear is zero), else F_t -= gamma_t v_t when tangential_damping
-// (gamma_t = gammat m_eff, or gammat with absolute_damping). Returns F_t (N) on b.
+// (gamma_t = gammat m_eff, or gammat with absolute_damping) -- as LIGGGHTS so far -- and then,
+// unlike LIGGGHTS (see above), if |F_t| > mu |F_n| the total is scaled down to mu |F_n|. The
+// shear is left as it is in that case: the spring alone is within the limit, only the damper's
+// share is cut, so no slip is recorded for what is a transient of the damper.
+// Returns F_t (N) on b.
 Eigen::Vector3d tangential_force_history(const ContactCoefficients &c, const Eigen::Vector3d &n,
                                          const Eigen::Vector3d &v_t, double f_n, double m_eff,
                                          double dt, Eigen::Vector3d &shear);
@@ -69,6 +89,30 @@ Eigen::Vector3d tangential_force_history(const ContactCoefficients &c, const Eig
 // v_t = 0 (gamma_t as above). tangential_damping does not apply: here friction IS damping.
 Eigen::Vector3d tangential_force_no_history(const ContactCoefficients &c,
                                             const Eigen::Vector3d &v_t, double f_n, double m_eff);
+
+// Rocking damper of a face contact (patch_area > 0, contact_reduction.h step 6): the couple ON
+// B, about the contact point, of a normal dashpot of total coefficient gamma_n (the normal
+// sub-model's: gamman m_eff, or gamman with absolute_damping) spread uniformly over the patch,
+// for the relative angular velocity w = omega_b - omega_a:
+//   tau_b = -(gamma_n / A) K w,  K = integral over the patch of (r x n)(r x n)^T dA
+//         = trace(J) P - J       (J = patch_second_moment, P = I - n n^T),
+// since b's material at p + r moves along n, relative to a's, at (w x r) . n = w . (r x n).
+// K n = 0: only w_perp = P w (rocking) is resisted, twisting about n is friction's business.
+// The force of that dashpot, integral of -(gamma_n / A)(w . (r x n)) n dA, is zero about the
+// area centroid and is neglected about the centre of pressure (the two coincide for parallel
+// faces), so the result is a pure couple: it changes no momentum, and it dissipates
+// (w . tau_b = -(gamma_n / A) w^T K w <= 0, K positive semi-definite). On a rocking face the
+// resisting normal velocities are those of the distributed pressure: the couple adds to the
+// point force's damping what the single point misses, so each in-plane axis gets damping
+// gamma_n J_axis / A against the rotational stiffness kn J_axis / A that the centre of
+// pressure gives a tilting face -- the damping ratio of the normal mode, for rocking.
+// With limit_force (a pressure that is nowhere negative) the couple is capped at
+// |F_n| sqrt(2 trace(J) / A) (F_n times the radius of the disk with the patch's ratio of polar
+// moment to area, the largest lever of a disk-shaped patch): a dashpot cannot pull the rising
+// side of the face down harder than the contact presses. Zero when A <= 0 or gamma_n = 0.
+Eigen::Vector3d rocking_couple(const ContactCoefficients &c, const Eigen::Vector3d &n,
+                               double patch_area, const Eigen::Matrix3d &patch_second_moment,
+                               const Eigen::Vector3d &omega_rel, double f_n, double m_eff);
 
 // State of a rigid body at the start of the force computation. For a wall: mass <= 0 (or
 // infinite), v the wall's velocity at the contact, omega zero (x is then irrelevant).

@@ -117,8 +117,11 @@ bool contact_polygon(const Vector3d &a0, const Vector3d &a1, const Vector3d &a2,
   // A / 12 (sum_i f_i * sum_i d_i + sum_i f_i d_i). Coordinates relative to q.p[0].
   const Vector2d &p0 = q.p[0];
   const double o0 = std::max(0.0, overlap(p0));
+  // Second moment of area about q.p[0]: integral of x x^T dA over the triangle (0, d1, d2) is
+  // A/12 (d1 d1^T + d2 d2^T + (d1 + d2)(d1 + d2)^T).
   double area = 0.0, weight = 0.0;
   Vector2d moment = Vector2d::Zero(), area_moment = Vector2d::Zero();
+  Eigen::Matrix2d second = Eigen::Matrix2d::Zero();
   for (int i = 1; i + 1 < q.n; ++i) {
     const Vector2d d1 = q.p[i] - p0, d2 = q.p[i + 1] - p0;
     const double o1 = std::max(0.0, overlap(q.p[i])), o2 = std::max(0.0, overlap(q.p[i + 1]));
@@ -127,14 +130,25 @@ bool contact_polygon(const Vector3d &a0, const Vector3d &a1, const Vector3d &a2,
     area_moment += at / 3.0 * (d1 + d2);
     weight += at * (o0 + o1 + o2) / 3.0;
     moment += at / 12.0 * ((o0 + o1 + o2) * (d1 + d2) + o1 * d1 + o2 * d2);
+    const Vector2d d12 = d1 + d2;
+    second += at / 12.0 * (d1 * d1.transpose() + d2 * d2.transpose() + d12 * d12.transpose());
   }
   if (!(area > 0.0))
     return true;
   patch.area = area;
   patch.weight = std::max(0.0, weight);
-  const Vector2d c2 =
-      p0 + (weight > 0.0 ? Vector2d(moment / weight) : Vector2d(area_moment / area));
+  const Vector2d cen = area_moment / area; // area centroid relative to p0
+  const Vector2d c2 = p0 + (weight > 0.0 ? Vector2d(moment / weight) : cen);
   patch.centroid = o + c2.x() * u + c2.y() * v + 0.5 * (ha(c2) + hb(c2)) * m;
+  const Vector2d ac2 = p0 + cen;
+  patch.area_centroid = o + ac2.x() * u + ac2.y() * v + 0.5 * (ha(ac2) + hb(ac2)) * m;
+  // Parallel-axis theorem to the centroid, then into the world frame: J = B J2 B^T, B = [u v].
+  Eigen::Matrix2d j2 = second - area * cen * cen.transpose();
+  j2(0, 1) = j2(1, 0) = 0.5 * (j2(0, 1) + j2(1, 0));
+  Eigen::Matrix<double, 3, 2> basis;
+  basis.col(0) = u;
+  basis.col(1) = v;
+  patch.second_moment = basis * j2 * basis.transpose();
   return true;
 }
 

@@ -23,6 +23,14 @@
 //              (height (h_a + h_b) / 2 along m): the centre of pressure. For parallel faces it
 //              is the centroid of the overlap region; for faces tilted by a small angle it
 //              moves towards the side where they press harder (a restoring torque).
+//   area_centroid, second_moment = the centroid of P (lifted to the mid-surface likewise) and
+//              its second moment of area about that centroid, J = integral of r r^T dA,
+//              r = x - area_centroid in the plane orthogonal to m (m^4, a symmetric 3x3 tensor in
+//              the world frame, rank 2, J m = 0; trace J = the polar moment). Exact for the
+//              polygon, from the fan formula integral over a triangle (0, d1, d2) of x x^T dA =
+//              A/12 (d1 d1^T + d2 d2^T + (d1 + d2)(d1 + d2)^T), shifted to the centroid.
+//              Geometric only (independent of the overlap o): it is what a dashpot spread
+//              uniformly over the patch needs to resist rocking (contact_reduction.h, step 6).
 // A pair whose planes cross inside the polygon (intersecting triangles) is handled by the same
 // formula: o keeps growing past the crossing, as the reduction's overlap does.
 //
@@ -55,6 +63,11 @@ struct ContactPolygon {
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero(); // m, centre of pressure on the
                                                       // mid-surface (meaningful if weight > 0)
   double min_triangle_area = 0.0; // m^2, the smaller of the two triangles' areas
+  Eigen::Vector3d area_centroid = Eigen::Vector3d::Zero(); // m, centroid of the patch's area
+                                                           // on the mid-surface (if area > 0)
+  Eigen::Matrix3d second_moment = Eigen::Matrix3d::Zero(); // m^4, integral of r r^T dA about
+                                                           // area_centroid, r orthogonal to m
+  double polar_moment() const { return second_moment.trace(); } // m^4
 };
 
 // Patch of triangle a = (a0, a1, a2) and triangle b = (b0, b1, b2) under a soft layer of

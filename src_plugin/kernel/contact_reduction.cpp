@@ -168,6 +168,11 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
   const Raw &s = raw[seed];
   Vector3d sum_p = Vector3d::Zero(), sum_n = Vector3d::Zero(), sum_pa = Vector3d::Zero();
   double sum_w = 0.0, sum_wn = 0.0, sum_wa = 0.0;
+  // Area moments of the polygons (step 6), relative to the seed's midpoint (near the patch, so
+  // no digits are lost far from the world origin): zeroth, first, second.
+  double area0 = 0.0;
+  Vector3d area1 = Vector3d::Zero();
+  Eigen::Matrix3d area2 = Eigen::Matrix3d::Zero();
   p.min_distance = std::numeric_limits<double>::infinity();
   for (int i : members) {
     if (cls[i] != c)
@@ -184,6 +189,10 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
     if (member_polygon(r, faces, layer, poly)) {
       sum_pa += poly.weight * poly.centroid;
       sum_wa += poly.weight;
+      const Vector3d d = poly.area_centroid - s.point;
+      area0 += poly.area;
+      area1 += poly.area * d;
+      area2 += poly.second_moment + poly.area * d * d.transpose();
     }
     if (r.overlap >= s.overlap - kNormalDepthBand * layer) {
       sum_n += r.overlap * r.normal;
@@ -199,6 +208,17 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
     p.normal = sum_n / len;
   else
     p.normal = finite(s.normal) ? s.normal : ref;
+  if (sum_wa > 0.0 && area0 > 0.0) {
+    // Parallel-axis theorem from s.point to p.point (q = p.point - s.point), then onto the
+    // contact plane.
+    const Vector3d q = p.point - s.point;
+    const Eigen::Matrix3d about_point =
+        area2 - area1 * q.transpose() - q * area1.transpose() + area0 * q * q.transpose();
+    const Eigen::Matrix3d plane = Eigen::Matrix3d::Identity() - p.normal * p.normal.transpose();
+    Eigen::Matrix3d j = plane * about_point * plane;
+    p.patch_second_moment = 0.5 * (j + j.transpose());
+    p.patch_area = area0;
+  }
   return p;
 }
 

@@ -69,6 +69,22 @@
 //     each other's footprint). The switch at 10 degrees moves the point by at most the width
 //     of the wedge where the layers overlap, (eps_a + eps_b) / tan(10 deg).
 //     The baselines (paper_min_width, none) keep the kernel's midpoints: they are the paper's.
+//  6. The patch's extent, for the rocking damper of contact_force.h. The force of a contact
+//     acts at one point, so a rotation of the two bodies about that point (about an axis in
+//     the contact plane: one face rocking on the other) gives no normal velocity there and the
+//     normal dashpot does not resist it, while a real (or a pressure-like, distributed) contact
+//     of two faces is squeezed on one side and released on the other: the rocking of a face
+//     contact would be undamped (measured: a cube sliding down an incline with friction rocked
+//     at several rad/s, validation/contact/friction). So a class with polygons also carries
+//       patch_area          = sum of the members' polygon areas (m^2), and
+//       patch_second_moment = sum of their second moments of area, each moved from its own
+//                             area centroid to the contact point (parallel-axis theorem:
+//                             J_i + A_i d_i d_i^T, d_i = area_centroid_i - point), projected onto
+//                             the contact plane (P J P, P = I - n n^T): m^4, symmetric 3x3,
+//                             world frame, J n = 0.
+//     Like the point, both are those of the faces' overlap region for any meshing (the polygons
+//     tile it). A class without polygons (a vertex, an edge, a face at a clear angle) is
+//     point-like and gets 0 for both: no couple.
 //
 // Intersecting triangles (real surfaces crossing: the soft layer was overrun). The kernel's
 // normal for such a pair (minimum-overlap separating axis) is used when finite; otherwise
@@ -110,6 +126,10 @@ struct ContactPoint {
   int num_merged = 0;         // raw triangle-pair contacts represented by this point
   bool intersecting = false;  // some member's triangles intersect
   int tri_a = -1, tri_b = -1; // the deepest member's triangles (diagnostics)
+  // Extent of a face contact (step 6): 0 for a point-like contact.
+  double patch_area = 0.0;                                       // m^2
+  Eigen::Matrix3d patch_second_moment = Eigen::Matrix3d::Zero(); // m^4, about `point`, in the
+                                                                 // plane orthogonal to `normal`
 };
 
 enum class ReductionMethod {

@@ -140,6 +140,34 @@ TEST(TangentialHistory, SlipCapsAtCoulombAndRescalesShear) {
               1.0, 1e-12);
 }
 
+// Unlike LIGGGHTS (contact_model.h): when the spring is below the Coulomb limit but spring +
+// damping is above it, the total is capped at mu |F_n| in its own direction; the shear stays.
+TEST(TangentialHistory, DampedTotalIsCappedAtCoulomb) {
+  const ContactCoefficients c = material();
+  const Vector3d n = Vector3d::UnitZ();
+  Vector3d shear(0, 2e-4, 0);
+  const Vector3d vt(0.1, 0, 0);
+  const double dt = 1e-3, meff = 1.2, fn = 1.0; // cap 0.5 N
+  // shear -> (1e-4, 2e-4): spring (-0.1, -0.2), |.| = 0.224 < 0.5; damping -10 * 1.2 * vt =
+  // (-1.2, 0): total (-1.3, -0.2), |.| = 1.315 > 0.5, scaled to 0.5 N.
+  const Vector3d ft = tri::tangential_force_history(c, n, vt, fn, meff, dt, shear);
+  EXPECT_NEAR(shear.x(), 1e-4, 1e-18);
+  EXPECT_NEAR(shear.y(), 2e-4, 1e-18);
+  const Vector3d uncapped(-1.3, -0.2, 0);
+  EXPECT_NEAR(ft.norm(), 0.5, 1e-14);
+  EXPECT_NEAR((ft - 0.5 / uncapped.norm() * uncapped).norm(), 0.0, 1e-14);
+  // Below the cap nothing changes (fn = 10: cap 5 N > 1.315 N): LIGGGHTS's value.
+  Vector3d shear2(0, 2e-4, 0);
+  const Vector3d ft2 = tri::tangential_force_history(c, n, vt, 10.0, meff, dt, shear2);
+  EXPECT_NEAR((ft2 - uncapped).norm(), 0.0, 1e-14);
+  // mu = 0: no tangential force at all, damping included.
+  ContactCoefficients frictionless = c;
+  frictionless.mu = 0.0;
+  Vector3d shear3 = Vector3d::Zero();
+  EXPECT_EQ(tri::tangential_force_history(frictionless, n, vt, 10.0, meff, dt, shear3).norm(),
+            0.0);
+}
+
 TEST(TangentialHistory, ShearIsProjectedOntoRotatedTangentPlane) {
   ContactCoefficients c = material();
   c.gammat = 0.0;
@@ -166,6 +194,136 @@ TEST(TangentialNoHistory, ViscousBelowCapCoulombAbove) {
   ft = tri::tangential_force_no_history(c, vt, 0.2, 1.2);
   EXPECT_NEAR(ft.y(), -0.1, 1e-15);
   EXPECT_EQ(tri::tangential_force_no_history(c, Vector3d::Zero(), 10.0, 1.2), Vector3d::Zero());
+}
+
+// ---- rocking damper of face contacts ----
+
+// A square patch of side L (J = L^4/12 diag(1, 1, 0)) and an L x W rectangle: the couple on b
+// is -(gamma_n / A) (trace(J) P - J) w, by hand: about x it is -gamma_n W^2 / 12 w_x (rotation
+// about x moves the patch along n in proportion to y, whose extent is W), about y
+// -gamma_n L^2 / 12 w_y; twisting about n is not resisted; it opposes the relative rotation.
+TEST(RockingCouple, ValueAndSignByHand) {
+  ContactCoefficients c = material(); // gamman 20 1/s, meff 1.2 kg: gamma_n = 24 kg/s
+  const double meff = 1.2, gamma = 24.0, L = 2e-3, W = 0.5e-3;
+  const Vector3d n = Vector3d::UnitZ();
+  Eigen::Matrix3d J = Eigen::Matrix3d::Zero();
+  J(0, 0) = W * L * L * L / 12; // integral x^2 dA
+  J(1, 1) = L * W * W * W / 12; // integral y^2 dA
+  const Vector3d w(3.0, -2.0, 7.0);
+  const Vector3d tau = tri::rocking_couple(c, n, L * W, J, w, 10.0, meff);
+  EXPECT_NEAR(tau.x(), -gamma * W * W / 12 * w.x(), 1e-15);
+  EXPECT_NEAR(tau.y(), -gamma * L * L / 12 * w.y(), 1e-15);
+  EXPECT_EQ(tau.z(), 0.0);
+  EXPECT_LT(tau.dot(w), 0.0); // dissipative
+  // Absolute damping: gamman in kg/s, the mass does not enter.
+  c.absolute_damping = true;
+  EXPECT_NEAR(tri::rocking_couple(c, n, L * W, J, w, 10.0, 7.0).y(), -20.0 * L * L / 12 * w.y(),
+              1e-15);
+  c.absolute_damping = false;
+  // No patch or no damping: nothing.
+  EXPECT_EQ(tri::rocking_couple(c, n, 0.0, J, w, 10.0, meff), Vector3d::Zero());
+  c.gamman = 0.0;
+  EXPECT_EQ(tri::rocking_couple(c, n, L * W, J, w, 10.0, meff), Vector3d::Zero());
+}
+
+// With limit_force the couple is at most |F_n| sqrt(2 trace(J) / A) (the lever of a disk).
+TEST(RockingCouple, CappedByTheNormalForceWithLimitForce) {
+  ContactCoefficients c = material();
+  const double L = 2e-3, fn = 1e-3;
+  Eigen::Matrix3d J = Eigen::Matrix3d::Zero();
+  J(0, 0) = J(1, 1) = L * L * L * L / 12;
+  const Vector3d w(0, 500.0, 0); // uncapped: 24 * L^2 / 12 * 500 = 4e-3 N m
+  const Vector3d free = tri::rocking_couple(c, Vector3d::UnitZ(), L * L, J, w, fn, 1.2);
+  EXPECT_NEAR(free.y(), -4e-3, 1e-15);
+  c.limit_force = true;
+  const Vector3d capped = tri::rocking_couple(c, Vector3d::UnitZ(), L * L, J, w, fn, 1.2);
+  EXPECT_NEAR(capped.y(), -fn * std::sqrt(2 * (L * L / 6)), 1e-18);
+  EXPECT_EQ(capped.x(), 0.0);
+  EXPECT_EQ(tri::rocking_couple(c, Vector3d::UnitZ(), L * L, J, w, 0.0, 1.2), Vector3d::Zero());
+}
+
+// The tensor formula against the dashpot it stands for: a triangle-shaped patch in a tilted
+// plane, about a point off its centroid, integrated on a fine grid:
+// tau_b = -(gamma_n / A) sum over cells of r x n ((w x r) . n) dA.
+TEST(RockingCouple, EqualsADashpotSpreadOverThePatch) {
+  const ContactCoefficients c = material();
+  const double meff = 0.3, gamma = c.gamman * meff;
+  const Eigen::Matrix3d R =
+      Eigen::AngleAxisd(0.8, Vector3d(1, -2, 0.5).normalized()).toRotationMatrix();
+  const Vector3d n = R.col(2), e1 = R.col(0), e2 = R.col(1);
+  const Vector3d p(0.1e-3, -0.05e-3, 0); // in-plane coordinates of the contact point
+  // Triangle (0,0), (2,0), (0.5,1.5) mm in (e1, e2).
+  const Eigen::Vector2d v0(0, 0), v1(2e-3, 0), v2(0.5e-3, 1.5e-3);
+  const int N = 1500;
+  double A = 0;
+  Eigen::Matrix3d J = Eigen::Matrix3d::Zero();
+  Vector3d tau = Vector3d::Zero();
+  const Vector3d w(40.0, -25.0, 60.0);
+  std::vector<std::pair<Vector3d, double>> cells;
+  for (int i = 0; i < N; ++i)
+    for (int j = 0; j < N; ++j) {
+      const Eigen::Vector2d x(2e-3 * (i + 0.5) / N, 1.5e-3 * (j + 0.5) / N);
+      auto side = [&](const Eigen::Vector2d &a, const Eigen::Vector2d &b) {
+        return (b - a).x() * (x - a).y() - (b - a).y() * (x - a).x();
+      };
+      if (side(v0, v1) < 0 || side(v1, v2) < 0 || side(v2, v0) < 0)
+        continue;
+      const double dA = (2e-3 / N) * (1.5e-3 / N);
+      const Vector3d r = (x.x() - p.x()) * e1 + (x.y() - p.y()) * e2;
+      A += dA;
+      J += dA * r * r.transpose();
+      cells.push_back({r, dA});
+    }
+  for (const auto &cell : cells)
+    tau -= gamma / A * cell.first.cross(n) * (w.cross(cell.first).dot(n) * cell.second);
+  const Vector3d got = tri::rocking_couple(c, n, A, J, w, 1.0, meff);
+  EXPECT_LE((got - tau).norm(), 1e-12 * tau.norm()) << got.transpose() << " vs "
+                                                     << tau.transpose();
+  EXPECT_NEAR(got.dot(n), 0.0, 1e-12 * tau.norm());
+}
+
+// In pair_contact_force the couple is pure: the force is that of the same points without a
+// patch, torque_b changes by C and torque_a by -C, and the total angular momentum balance holds
+// about any point; the relative rotation loses energy.
+TEST(PairContactForce, RockingCoupleIsAPureDissipativeCouple) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  auto rv = [&](double s) -> Vector3d { return Vector3d(u(rng), u(rng), u(rng)) * s; };
+  for (const bool wall : {false, true})
+    for (int trial = 0; trial < 20; ++trial) {
+      ContactCoefficients c = material();
+      c.limit_force = trial % 2 == 1;
+      const BodyState a = body(rv(0.003), rv(0.1), rv(50.0), 1e-3);
+      const BodyState b = body(rv(0.003), rv(0.1), wall ? Vector3d::Zero() : rv(50.0),
+                               wall ? 0.0 : 2e-3);
+      std::vector<ContactPoint> plain, patched;
+      for (int i = 0; i < 3; ++i) {
+        plain.push_back(point(rv(0.002), rv(1.0), 1e-5 * (3 - i)));
+        ContactPoint q = plain.back();
+        const Eigen::Matrix3d P = Eigen::Matrix3d::Identity() - q.normal * q.normal.transpose();
+        const Vector3d t1 = P * rv(1e-3), t2 = P * rv(1e-3);
+        q.patch_area = 2e-6;
+        q.patch_second_moment = 1e-6 / 12 * (t1 * t1.transpose() + t2 * t2.transpose());
+        patched.push_back(q);
+      }
+      double h0[tri::kHistoryDoubles] = {}, h1[tri::kHistoryDoubles] = {};
+      const auto r0 = tri::pair_contact_force(plain, a, b, c, 1e-5, h0);
+      const auto r1 = tri::pair_contact_force(patched, a, b, c, 1e-5, h1);
+      EXPECT_EQ(r1.force_a, r0.force_a);
+      const Vector3d couple_b = r1.torque_b - r0.torque_b;
+      EXPECT_GT(couple_b.norm(), 0.0);
+      EXPECT_NEAR((r1.torque_a - r0.torque_a + couple_b).norm(), 0.0,
+                  1e-14 * (r0.torque_a.norm() + couple_b.norm()));
+      EXPECT_LE(couple_b.dot(b.omega - a.omega), 0.0);
+      for (const Vector3d &o : {Vector3d(Vector3d::Zero()), rv(1.0)}) {
+        const Vector3d total =
+            (a.x - o).cross(r1.force_a) + r1.torque_a - (b.x - o).cross(r1.force_a) + r1.torque_b;
+        const double scale = r1.force_a.norm() * (0.01 + o.norm()) + couple_b.norm();
+        EXPECT_NEAR(total.norm(), 0.0, 1e-13 * scale);
+      }
+      for (int k = 0; k < tri::kHistoryDoubles; ++k)
+        EXPECT_EQ(h0[k], h1[k]); // the couple does not touch the tangential history
+    }
 }
 
 // ---- kinematics ----

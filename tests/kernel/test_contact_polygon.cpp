@@ -317,3 +317,204 @@ TEST(ContactPolygon, DegenerateTriangleIsRejected) {
 }
 
 } // namespace
+
+// ---- second moment of area (the rocking damper's patch extent) ----
+
+namespace second_moment {
+
+// Analytic second moment of a triangle about its centroid: A/12 sum e_i e_i^T, e_i = v_i - c
+// (a closed form different from the fan-and-parallel-axis sum of the implementation).
+Matrix3d triangle_moment(const Tri &t) {
+  const Vector3d c = centroid(t);
+  Matrix3d j = Matrix3d::Zero();
+  for (const Vector3d &v : t.v)
+    j += (v - c) * (v - c).transpose();
+  return area(t) / 12.0 * j;
+}
+
+void expect_tensor_near(const Matrix3d &got, const Matrix3d &want, double tol, const char *what) {
+  EXPECT_LE((got - want).norm(), tol) << what << "\ngot\n" << got << "\nwant\n" << want;
+}
+
+} // namespace second_moment
+
+// The right triangle (0,0), (2L,0), (0,2L) and the right triangle (L,L), (-L,L), (L,-L) overlap
+// in the square [0, L]^2: J = L^4 / 12 diag(1, 1) about its centre, polar L^4 / 6; the same
+// after turning and moving the whole scene (world-frame tensor R J R^T).
+TEST(ContactPolygon, SecondMomentOfASquare) {
+  using second_moment::expect_tensor_near;
+  const double L = 1e-3, g = 0.4 * kLayer;
+  const Tri a0 = {{Vector3d(0, 0, 0), Vector3d(2 * L, 0, 0), Vector3d(0, 2 * L, 0)}};
+  const Tri b0 = {{Vector3d(L, L, g), Vector3d(-L, L, g), Vector3d(L, -L, g)}};
+  const Matrix3d turns[] = {
+      Matrix3d::Identity(),
+      Eigen::AngleAxisd(1.1, Vector3d(0.2, -0.7, 0.4).normalized()).toRotationMatrix()};
+  for (const Matrix3d &R : turns)
+    for (const Vector3d &shift : {Vector3d(0, 0, 0), Vector3d(0.3, -0.2, 0.1)}) {
+      Tri a, b;
+      for (int k = 0; k < 3; ++k) {
+        a.v[k] = shift + R * a0.v[k];
+        b.v[k] = shift + R * b0.v[k];
+      }
+      tri::ContactPolygon p;
+      ASSERT_TRUE(patch(a, b, R * Vector3d::UnitZ(), kLayer, p));
+      EXPECT_NEAR(p.area, L * L, 1e-12 * L * L);
+      EXPECT_LE((p.area_centroid - (shift + R * Vector3d(0.5 * L, 0.5 * L, 0.5 * g))).norm(),
+                1e-9 * L);
+      const Matrix3d want = R * Vector3d(1, 1, 0).asDiagonal() * R.transpose() * (L * L * L * L / 12);
+      expect_tensor_near(p.second_moment, want, 1e-9 * L * L * L * L, "square");
+      EXPECT_NEAR(p.polar_moment(), L * L * L * L / 6, 1e-9 * L * L * L * L);
+      EXPECT_LE((p.second_moment * (R * Vector3d::UnitZ())).norm(), 1e-9 * L * L * L * L);
+    }
+}
+
+// Congruent triangles: the patch is the triangle. Right triangle with legs b along x and h along
+// y: integral x^2 dA = h b^3 / 36, y^2: b h^3 / 36, xy: -b^2 h^2 / 72 about the centroid; and
+// the general triangle kBase against the closed form A/12 sum e_i e_i^T.
+TEST(ContactPolygon, SecondMomentOfATriangle) {
+  using second_moment::expect_tensor_near;
+  const double bx = 1e-3, hy = 0.6e-3, g = 0.3 * kLayer;
+  const Tri right = {{Vector3d(0, 0, 0), Vector3d(bx, 0, 0), Vector3d(0, hy, 0)}};
+  tri::ContactPolygon p;
+  ASSERT_TRUE(patch(right, reversed(lifted(right, g)), Vector3d::UnitZ(), kLayer, p));
+  Matrix3d want = Matrix3d::Zero();
+  want(0, 0) = hy * bx * bx * bx / 36;
+  want(1, 1) = bx * hy * hy * hy / 36;
+  want(0, 1) = want(1, 0) = -bx * bx * hy * hy / 72;
+  const double scale = bx * bx * bx * bx;
+  expect_tensor_near(p.second_moment, want, 1e-12 * scale, "right triangle");
+  EXPECT_LE((p.area_centroid - Vector3d(bx / 3, hy / 3, 0.5 * g)).norm(), 1e-12 * bx);
+
+  ASSERT_TRUE(patch(kBase, reversed(lifted(kBase, g)), Vector3d::UnitZ(), kLayer, p));
+  expect_tensor_near(p.second_moment, second_moment::triangle_moment(kBase), 1e-12 * scale,
+                     "kBase");
+  // The hexagon of the star of David: J of the triangle minus its three corner triangles
+  // (each of side 1/3), moved to the common centroid by the parallel-axis theorem.
+  const Vector3d c = centroid(kBase);
+  Tri star;
+  for (int k = 0; k < 3; ++k)
+    star.v[k] = 2.0 * c - kBase.v[k] + Vector3d(0, 0, 0.5 * kLayer);
+  ASSERT_TRUE(patch(kBase, star, Vector3d::UnitZ(), kLayer, p));
+  Matrix3d hexagon = second_moment::triangle_moment(kBase);
+  for (int k = 0; k < 3; ++k) {
+    Tri corner;
+    for (int i = 0; i < 3; ++i)
+      corner.v[i] = kBase.v[k] + (kBase.v[i] - kBase.v[k]) / 3.0;
+    const Vector3d d = centroid(corner) - c;
+    hexagon -= second_moment::triangle_moment(corner) + area(corner) * d * d.transpose();
+  }
+  expect_tensor_near(p.second_moment, hexagon, 1e-12 * scale, "hexagon");
+}
+
+// A small triangle nested off-centre in a large one, the scene 1000 sizes from the origin: the
+// patch is the small triangle, J about ITS centroid (not the large one's, not a vertex's).
+TEST(ContactPolygon, SecondMomentOfAnOffsetPatchIsAboutItsOwnCentroid) {
+  using second_moment::expect_tensor_near;
+  const Vector3d far(1.0, -1.0, 0.5);
+  Tri big = kBase, small;
+  const Vector3d at(0.55e-3, 0.15e-3, 0.2 * kLayer);
+  small.v[0] = at;
+  small.v[1] = at + Vector3d(0.2e-3, 0.05e-3, 0);
+  small.v[2] = at + Vector3d(-0.05e-3, 0.25e-3, 0);
+  for (int k = 0; k < 3; ++k) {
+    big.v[k] += far;
+    small.v[k] += far;
+  }
+  const double scale = std::pow(0.25e-3, 4);
+  tri::ContactPolygon p;
+  for (const bool small_is_a : {false, true}) {
+    ASSERT_TRUE(small_is_a ? patch(small, big, -Vector3d::UnitZ(), kLayer, p)
+                           : patch(big, small, Vector3d::UnitZ(), kLayer, p));
+    EXPECT_NEAR(p.area, area(small), 1e-9 * area(small));
+    expect_tensor_near(p.second_moment, second_moment::triangle_moment(small), 1e-7 * scale,
+                       "offset");
+    EXPECT_LE((p.area_centroid - (centroid(small) - Vector3d(0, 0, 0.1 * kLayer))).norm(),
+              1e-9 * 1e-3);
+  }
+}
+
+// The layer cut and tilts: random nearly parallel pairs against midpoint quadrature (as
+// AgreesWithQuadrature, coarser grid), area centroid and second moment.
+TEST(ContactPolygon, SecondMomentAgreesWithQuadrature) {
+  std::mt19937_64 rng(77);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int compared = 0;
+  double worst_j = 0, worst_c = 0;
+  for (int trial = 0; trial < 24; ++trial) {
+    const Matrix3d R =
+        Eigen::AngleAxisd(3.0 * u(rng), Vector3d(u(rng), u(rng), u(rng)).normalized())
+            .toRotationMatrix();
+    const Matrix3d tilt =
+        Eigen::AngleAxisd(0.14 * std::abs(u(rng)), Vector3d(u(rng), u(rng), 0).normalized())
+            .toRotationMatrix();
+    Tri a, b;
+    for (int k = 0; k < 3; ++k) {
+      a.v[k] = Vector3d(1e-3 * u(rng), 1e-3 * u(rng), 0);
+      b.v[k] = a.v[k] + Vector3d(0.4e-3 * u(rng), 0.4e-3 * u(rng), 0);
+    }
+    const Vector3d centre_b(0, 0, kLayer * (0.2 + 0.6 * std::abs(u(rng))));
+    for (int k = 0; k < 3; ++k) {
+      b.v[k] = centre_b + tilt * b.v[k];
+      a.v[k] = R * a.v[k];
+      b.v[k] = R * b.v[k];
+    }
+    const Vector3d normal = R * Vector3d::UnitZ();
+    tri::ContactPolygon p;
+    ASSERT_TRUE(patch(a, b, normal, kLayer, p));
+    const Vector3d na = (a.v[1] - a.v[0]).cross(a.v[2] - a.v[0]).normalized();
+    Vector3d nb = (b.v[1] - b.v[0]).cross(b.v[2] - b.v[0]).normalized();
+    if (na.dot(nb) < 0)
+      nb = -nb;
+    Vector3d m = (na + nb).normalized();
+    if (m.dot(normal) < 0)
+      m = -m;
+    const Vector3d e1 = m.unitOrthogonal(), e2 = m.cross(e1);
+    auto to2 = [&](const Vector3d &x) { return Vector2d(x.dot(e1), x.dot(e2)); };
+    auto inside = [&](const Tri &t, const Vector2d &x) {
+      double s[3];
+      for (int k = 0; k < 3; ++k) {
+        const Vector2d p0 = to2(t.v[k]), d = to2(t.v[(k + 1) % 3]) - p0, r = x - p0;
+        s[k] = d.x() * r.y() - d.y() * r.x();
+      }
+      return (s[0] >= 0 && s[1] >= 0 && s[2] >= 0) || (s[0] <= 0 && s[1] <= 0 && s[2] <= 0);
+    };
+    auto height = [&](const Tri &t, const Vector3d &n, const Vector2d &x) {
+      return n.dot(t.v[0] - (x.x() * e1 + x.y() * e2)) / n.dot(m);
+    };
+    const int N = 800;
+    const double h = 3.2e-3 / N;
+    double A = 0;
+    Vector2d S1 = Vector2d::Zero();
+    Eigen::Matrix2d S2 = Eigen::Matrix2d::Zero();
+    for (int i = 0; i < N; ++i)
+      for (int j = 0; j < N; ++j) {
+        const Vector2d xl(-1.6e-3 + (i + 0.5) * h, -1.6e-3 + (j + 0.5) * h);
+        if (!inside(a, xl) || !inside(b, xl))
+          continue;
+        if (kLayer - (height(b, nb, xl) - height(a, na, xl)) < 0)
+          continue;
+        A += h * h;
+        S1 += h * h * xl;
+        S2 += h * h * (xl * xl.transpose() + Eigen::Matrix2d::Identity() * h * h / 12);
+      }
+    if (A < 2500 * h * h)
+      continue;
+    ++compared;
+    const Vector2d c = S1 / A;
+    const Eigen::Matrix2d J2 = S2 - A * c * c.transpose();
+    Eigen::Matrix<double, 3, 2> B;
+    B << e1, e2;
+    const Matrix3d J = B * J2 * B.transpose();
+    const double err = (p.second_moment - J).norm() / J.trace();
+    worst_j = std::max(worst_j, err);
+    EXPECT_LE(err, 8e-3) << "trial " << trial;
+    const double cerr = (to2(p.area_centroid) - c).norm();
+    worst_c = std::max(worst_c, cerr);
+    EXPECT_LE(cerr, 2 * h) << "trial " << trial;
+    EXPECT_LE((p.second_moment * m).norm(), 1e-12 * J.trace());
+  }
+  EXPECT_GE(compared, 12);
+  std::printf("%d pairs compared; largest error of J relative to its trace %.1e, of the area "
+              "centroid %.1e m (grid cell %.1e m)\n",
+              compared, worst_j, worst_c, 3.2e-3 / 800);
+}

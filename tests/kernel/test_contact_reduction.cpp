@@ -668,6 +668,80 @@ TEST(ContactReductionPoint, TiltedCubeKeepsItsEdgeOrVertexPoint) {
       }
 }
 
+// Step 6: the patch of a face contact is the faces' overlap region for every meshing -- the
+// overhanging cube's rectangle [x0, x1] x [y0, y1]: area wx wy, and about the contact point
+// (its centre) integral x^2 dA = wy wx^3 / 12, y^2: wx wy^3 / 12, xy: 0, nothing along z --
+// even though each member polygon's centroid is elsewhere (parallel-axis theorem).
+TEST(ContactReductionPoint, PatchAreaAndSecondMomentAreTheOverlapsForEveryMeshing) {
+  const double half_plane = 0.75 * kSide, gap = 0.3 * kLayer, h = 0.5 * kSide;
+  const Vector3d xy(half_plane - 0.2 * kSide, -half_plane + 0.35 * kSide, 0);
+  const double x0 = std::max(xy.x() - h, -half_plane), x1 = std::min(xy.x() + h, half_plane);
+  const double y0 = std::max(xy.y() - h, -half_plane), y1 = std::min(xy.y() + h, half_plane);
+  const double wx = x1 - x0, wy = y1 - y0;
+  Matrix3d want = Matrix3d::Zero();
+  want(0, 0) = wy * wx * wx * wx / 12;
+  want(1, 1) = wx * wy * wy * wy / 12;
+  const double scale = std::pow(kSide, 4);
+  double worst = 0.0;
+  for (const int plane_k : {1, 16})
+    for (const int k : {1, 2, 4, 8})
+      for (int source = 0; source < 3; source += 2) {
+        Mesh a;
+        place_cube(a, k, xy, gap, Matrix3d::Identity());
+        const Mesh b = plane(half_plane, plane_k);
+        const auto raw = contacts_by(source, a, b);
+        const auto points = tri::reduce_contacts(raw, soa_of(a), kEps, soa_of(b), kEps,
+                                                 params_for(kSide / k, 2 * half_plane / plane_k));
+        ASSERT_EQ(points.size(), 1u);
+        EXPECT_NEAR(points[0].patch_area, wx * wy, 1e-9 * wx * wy)
+            << "tri/face " << 2 * k * k << " plane " << plane_k << " source " << source;
+        // The hybrid kernel's normal is exact to its tolerance, not to rounding: the projection
+        // onto its contact plane leaves J's z entries at that level.
+        const double err = (points[0].patch_second_moment - want).norm();
+        worst = std::max(worst, err / scale);
+        EXPECT_LE(err, (source == 2 ? 1e-6 : 1e-9) * scale) << "tri/face " << 2 * k * k << " plane " << plane_k
+                                     << " source " << source << "\n"
+                                     << points[0].patch_second_moment;
+      }
+  std::printf("overhanging cube: largest error of the patch's second moment %.1e side^4\n", worst);
+}
+
+// A flat face that is turned about z keeps the rotated tensor (isotropic for a square: the
+// same); tilted beyond kParallelFaceAngle (edge or vertex down) the contact is point-like: no
+// patch, no couple.
+TEST(ContactReductionPoint, EdgeOrVertexContactHasNoPatch) {
+  const double gap = 0.4 * kLayer;
+  const Vector3d xy(0.2e-3, 0.1e-3, 0);
+  const Matrix3d rotations[] = {
+      Eigen::AngleAxisd(0.5, Vector3d::UnitY()).toRotationMatrix(),
+      Eigen::AngleAxisd(0.2, Vector3d::UnitY()).toRotationMatrix(),
+      (Eigen::AngleAxisd(0.6, Vector3d::UnitX()) * Eigen::AngleAxisd(0.4, Vector3d::UnitY()))
+          .toRotationMatrix()};
+  for (const Matrix3d &R : rotations)
+    for (const int k : {1, 4}) {
+      Mesh a;
+      place_cube(a, k, xy, gap, R);
+      const Mesh b = plane(1.5 * kSide, 16);
+      const auto raw = contacts_by(2, a, b);
+      const auto points = tri::reduce_contacts(raw, soa_of(a), kEps, soa_of(b), kEps,
+                                               params_for(kSide / k, 3 * kSide / 16));
+      ASSERT_EQ(points.size(), 1u);
+      EXPECT_EQ(points[0].patch_area, 0.0);
+      EXPECT_EQ(points[0].patch_second_moment, Matrix3d::Zero());
+    }
+  Mesh a;
+  place_cube(a, 2, xy, gap, yaw(0.3));
+  const Mesh b = plane(1.5 * kSide, 16);
+  const auto points = tri::reduce_contacts(contacts_by(2, a, b), soa_of(a), kEps, soa_of(b), kEps,
+                                           params_for(kSide / 2, 3 * kSide / 16));
+  ASSERT_EQ(points.size(), 1u);
+  const double s4 = std::pow(kSide, 4);
+  EXPECT_NEAR(points[0].patch_area, kSide * kSide, 1e-9 * kSide * kSide);
+  Matrix3d want = Matrix3d::Zero();
+  want(0, 0) = want(1, 1) = s4 / 12;
+  EXPECT_LE((points[0].patch_second_moment - want).norm(), 1e-6 * s4); // hybrid normal
+}
+
 // A contact naming a triangle that the meshes do not have is a caller error, said as such.
 TEST(ContactReduction, TriangleIndexOutOfRangeThrows) {
   EXPECT_THROW(
