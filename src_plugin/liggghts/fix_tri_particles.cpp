@@ -30,8 +30,9 @@ using namespace FixConst;
 namespace {
 
 // state_ columns
-constexpr int kShape = 0, kQuat = 1, kAngmom = 5, kRestartForce = 8, kRestartTorque = 11,
-              kRestartPending = 14;
+constexpr int kShape = 0, kQuat = 1, kAngmom = 5;
+// pending_ columns
+constexpr int kForce = 0, kTorque = 3, kFlag = 6;
 constexpr double kUnset = -1.0;
 
 tri::Shape build_shape(const tri_liggghts::ShapeSpec &spec) {
@@ -130,6 +131,7 @@ FixTriParticles::~FixTriParticles() {
   atom->delete_callback(id, 1);
   atom->delete_callback(id, 2);
   memory->destroy(state_);
+  memory->destroy(pending_);
 }
 
 int FixTriParticles::setmask() { return PRE_FORCE; }
@@ -146,7 +148,7 @@ void FixTriParticles::initialise_atom(int i) {
       orient_random_ ? tri::random_orientation(orient_seed_, tag) : Eigen::Quaterniond::Identity();
   set_orientation(i, q);
   set_angular_momentum(i, Eigen::Vector3d::Zero());
-  std::fill(state_[i] + kValues, state_[i] + kStored, 0.0);
+  std::fill(pending_[i], pending_[i] + kPending, 0.0);
 }
 
 int FixTriParticles::initialise_unset_atoms() {
@@ -246,12 +248,14 @@ Eigen::Vector3d FixTriParticles::principal_inertia(int i) const {
 /* ---------------- per-atom storage: the LIGGGHTS callbacks ---------------- */
 
 void FixTriParticles::grow_arrays(int nmax) {
-  memory->grow(state_, nmax, kStored, "tri/particles:state");
+  memory->grow(state_, nmax, kValues, "tri/particles:state");
+  memory->grow(pending_, nmax, kPending, "tri/particles:pending");
   array_atom = state_;
 }
 
 void FixTriParticles::copy_arrays(int i, int j, int) {
-  std::memcpy(state_[j], state_[i], kStored * sizeof(double));
+  std::memcpy(state_[j], state_[i], kValues * sizeof(double));
+  std::memcpy(pending_[j], pending_[i], kPending * sizeof(double));
 }
 
 void FixTriParticles::set_arrays(int i) {
@@ -266,17 +270,19 @@ void FixTriParticles::set_arrays(int i) {
   state_[i][kShape] = kUnset;
   set_orientation(i, Eigen::Quaterniond::Identity());
   set_angular_momentum(i, Eigen::Vector3d::Zero());
-  std::fill(state_[i] + kValues, state_[i] + kStored, 0.0);
+  std::fill(pending_[i], pending_[i] + kPending, 0.0);
 }
 
 int FixTriParticles::pack_exchange(int i, double *buf) {
-  std::memcpy(buf, state_[i], kStored * sizeof(double));
-  return kStored;
+  std::memcpy(buf, state_[i], kValues * sizeof(double));
+  std::memcpy(buf + kValues, pending_[i], kPending * sizeof(double));
+  return kValues + kPending;
 }
 
 int FixTriParticles::unpack_exchange(int nlocal, double *buf) {
-  std::memcpy(state_[nlocal], buf, kStored * sizeof(double));
-  return kStored;
+  std::memcpy(state_[nlocal], buf, kValues * sizeof(double));
+  std::memcpy(pending_[nlocal], buf + kValues, kPending * sizeof(double));
+  return kValues + kPending;
 }
 
 int FixTriParticles::pack_border(int n, int *list, double *buf) {
@@ -315,33 +321,35 @@ void FixTriParticles::unpack_comm(int n, int first, double *buf) {
 }
 
 int FixTriParticles::pack_restart(int i, double *buf) {
-  buf[0] = kStored + 1;
+  buf[0] = kValues + kPending + 1;
   std::memcpy(buf + 1, state_[i], kValues * sizeof(double));
+  double *pending = buf + 1 + kValues;
   for (int k = 0; k < 3; ++k) {
-    buf[1 + kRestartForce + k] = atom->f[i][k];
-    buf[1 + kRestartTorque + k] = atom->torque[i][k];
+    pending[kForce + k] = atom->f[i][k];
+    pending[kTorque + k] = atom->torque[i][k];
   }
-  buf[1 + kRestartPending] = 1.0;
-  return kStored + 1;
+  pending[kFlag] = 1.0;
+  return kValues + kPending + 1;
 }
 
 void FixTriParticles::unpack_restart(int nlocal, int nth) {
-  std::memcpy(state_[nlocal], tri_liggghts::restart_record(atom->extra, nlocal, nth),
-              kStored * sizeof(double));
+  const double *record = tri_liggghts::restart_record(atom->extra, nlocal, nth);
+  std::memcpy(state_[nlocal], record, kValues * sizeof(double));
+  std::memcpy(pending_[nlocal], record + kValues, kPending * sizeof(double));
 }
 
-int FixTriParticles::size_restart(int) { return kStored + 1; }
-int FixTriParticles::maxsize_restart() { return kStored + 1; }
+int FixTriParticles::size_restart(int) { return kValues + kPending + 1; }
+int FixTriParticles::maxsize_restart() { return kValues + kPending + 1; }
 
 bool FixTriParticles::take_restored_force_and_torque(int i, double *f, double *torque) {
-  double *s = state_[i];
-  if (s[kRestartPending] != 1.0)
+  double *s = pending_[i];
+  if (s[kFlag] != 1.0)
     return false;
   for (int k = 0; k < 3; ++k) {
-    f[k] = s[kRestartForce + k];
-    torque[k] = s[kRestartTorque + k];
+    f[k] = s[kForce + k];
+    torque[k] = s[kTorque + k];
   }
-  s[kRestartPending] = 0.0;
+  s[kFlag] = 0.0;
   return true;
 }
 
@@ -384,7 +392,7 @@ double FixTriParticles::max_rad(int type) {
 }
 
 double FixTriParticles::memory_usage() {
-  double bytes = static_cast<double>(atom->nmax) * kStored * sizeof(double);
+  double bytes = static_cast<double>(atom->nmax) * (kValues + kPending) * sizeof(double);
   for (const tri::TriangleSoA &w : world_)
     bytes += 3.0 * w.x.capacity() * sizeof(double) + sizeof(w);
   return bytes;

@@ -25,9 +25,10 @@ namespace LAMMPS_NS {
 class FixTriParticles : public Fix {
 public:
   static constexpr int kValues = 8; // shape, q(4), L(3): what dumps see as f_ID[1..8]
-  // Stored per atom after those: the force and torque of the step a restart file was written
-  // at, and a flag that they are pending (see restored_force_and_torque).
-  static constexpr int kStored = kValues + 7;
+  // A second per-atom array: the force and torque of the step a restart file was written at,
+  // and a flag that they are pending (see take_restored_force_and_torque). Kept apart from the
+  // first, whose row length LIGGGHTS's variables and dumps assume to be kValues.
+  static constexpr int kPending = 7;
 
   FixTriParticles(class LAMMPS *, int, char **);
   ~FixTriParticles() override;
@@ -87,6 +88,7 @@ private:
   bool assign_by_type_ = false, orient_random_ = false;
   std::uint64_t assign_seed_ = 0, orient_seed_ = 0;
   double **state_ = nullptr;
+  double **pending_ = nullptr; // per atom: f(3), torque(3), flag
 
   void initialise_atom(int i);
   int initialise_unset_atoms();

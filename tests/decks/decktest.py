@@ -139,6 +139,16 @@ def test_ranks(ctx):
         check(serial[tag] == mpi[tag], f"atom {tag}: 1 rank {serial[tag]} != 2 ranks {mpi[tag]}")
 
 
+def test_peratom_variable(ctx):
+    run_deck(ctx, "in.peratom_variable", dict(FLIGHT_PERIODIC, px=1))
+    _, rows = last_frame(os.path.join(ctx.work, "peratom.dump"))
+    check(len(rows) == 15, f"{len(rows)} atoms")
+    for tag, r in rows.items():
+        for k in (0, 2, 4):
+            check(r[k] == r[k + 1], f"atom {tag}: f_shapes column {r[k]} but variable {r[k + 1]}")
+    check(len({r[2] for r in rows.values()}) > 1, "all atoms have the same orientation")
+
+
 def test_vtk(ctx):
     for ranks in (1, 2):
         sub = os.path.join(ctx.work, f"np{ranks}")
