@@ -271,3 +271,12 @@ void FixTriWall::unpack_restart(int nlocal, int nth) {
 
 int FixTriWall::size_restart(int) { return values_per_atom_ + 1; }
 int FixTriWall::maxsize_restart() { return values_per_atom_ + 1; }
+
+double FixTriWall::memory_usage() {
+  double bytes = static_cast<double>(atom->nmax) * values_per_atom_ * sizeof(double);
+  for (const tri::TriangleSoA &patch : patches_)
+    bytes += 3.0 * patch.x.capacity() * sizeof(double);
+  for (const Task &task : tasks_)
+    bytes += task.triangles.capacity() * sizeof(int);
+  return bytes;
+}

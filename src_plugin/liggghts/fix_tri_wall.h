@@ -40,6 +40,7 @@ public:
   void unpack_restart(int, int) override;
   int size_restart(int) override;
   int maxsize_restart() override;
+  double memory_usage() override;
 
   const tri::InteractionTally &tally() const { return tally_; }
   // Wall-clock seconds this fix has spent computing forces since the fix was created (for the
