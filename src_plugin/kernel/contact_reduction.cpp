@@ -161,23 +161,9 @@ bool member_polygon(const Raw &r, const Faces &faces, double layer, ContactPolyg
   return poly.weight > 0.0 && poly.area > kPatchAreaRounding * poly.min_triangle_area;
 }
 
-// Overlap eps_a + eps_b - gap at point x, the gap measured along n between the planes of
-// member r's two triangles (nearly parallel, so both planes cross the line x + t n).
-double overlap_at(const Raw &r, const Faces &faces, const Vector3d &x, const Vector3d &n,
-                  double layer) {
-  const TriangleSoA &ta = *faces.a, &tb = *faces.b;
-  const Vector3d a0 = ta.vertex(r.tri_a, 0), b0 = tb.vertex(r.tri_b, 0);
-  const Vector3d na = (ta.vertex(r.tri_a, 1) - a0).cross(ta.vertex(r.tri_a, 2) - a0);
-  const Vector3d nb = (tb.vertex(r.tri_b, 1) - b0).cross(tb.vertex(r.tri_b, 2) - b0);
-  const double t_a = (a0 - x).dot(na) / n.dot(na), t_b = (b0 - x).dot(nb) / n.dot(nb);
-  return layer - (t_b - t_a);
-}
-
 ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &members,
                         const std::vector<int> &cls, const std::vector<int> &absorbed, int c,
-                        int seed, double layer, const Vector3d &ref, const Faces &faces,
-                        std::vector<ReductionWorkspace::PatchMember> &patch) {
-  patch.clear();
+                        int seed, double layer, const Vector3d &ref, const Faces &faces) {
   ContactPoint p;
   const Raw &s = raw[seed];
   Vector3d sum_p = Vector3d::Zero(), sum_n = Vector3d::Zero(), sum_pa = Vector3d::Zero();
@@ -207,7 +193,6 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
       area0 += poly.area;
       area1 += poly.area * d;
       area2 += poly.second_moment + poly.area * d * d.transpose();
-      patch.push_back({i, poly.area_centroid});
     }
     if (r.overlap >= s.overlap - kNormalDepthBand * layer) {
       sum_n += r.overlap * r.normal;
@@ -233,22 +218,6 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
     Eigen::Matrix3d j = plane * about_point * plane;
     p.patch_second_moment = 0.5 * (j + j.transpose());
     p.patch_area = area0;
-    // Step 4, face contacts: the overlap where the force acts, at the centre of pressure, read
-    // off the planes of the polygon member nearest to it. For a flat face at a uniform gap this
-    // is that gap's overlap (any meshing); for a vertex pressed into a face (a cone of overlap)
-    // it is the deepest overlap, as for any point contact; for a tilted face it is the overlap
-    // at the centre of pressure, which does not change to first order with the tilt, so the
-    // face's height and tilt stiffnesses are symmetric (the deepest overlap, at the lower edge,
-    // would make the force grow with the tilt while the centre of pressure moves: a
-    // non-conservative coupling that makes a sliding block rock, validation/contact/friction).
-    const ReductionWorkspace::PatchMember *nearest = &patch.front();
-    for (const ReductionWorkspace::PatchMember &m : patch)
-      if ((m.area_centroid - p.point).squaredNorm() <
-          (nearest->area_centroid - p.point).squaredNorm())
-        nearest = &m;
-    const double at_centre = overlap_at(raw[nearest->raw], faces, p.point, p.normal, layer);
-    if (std::isfinite(at_centre) && at_centre > 0.0)
-      p.overlap = std::min(at_centre, s.overlap);
   }
   return p;
 }
@@ -322,8 +291,7 @@ void reduce_clusters(std::vector<Raw> &raw, double layer, const ReductionParams 
     }
     for (int c = first_class; c < static_cast<int>(seeds.size()); ++c)
       if (alive[c])
-        out.push_back(
-            make_point(raw, group, cls, absorbed, c, seeds[c], layer, ref, faces, work.patch));
+        out.push_back(make_point(raw, group, cls, absorbed, c, seeds[c], layer, ref, faces));
     begin = end;
   }
   // Deepest first; ties keep component/class order (deterministic).

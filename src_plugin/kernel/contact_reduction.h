@@ -36,14 +36,7 @@
 //     exactly (their separation along n_M is the patch's own gap); a second face at 90
 //     degrees or more never does.
 //  4. One ContactPoint per class: overlap = the largest member overlap (so a flat patch at
-//     uniform gap gives exactly eps_a + eps_b - gap, whatever the mesh), except for a face
-//     contact (a class with contact polygons, step 5): there the overlap at the centre of
-//     pressure, read off the planes of the polygon member nearest to it (at most the largest).
-//     That is the largest overlap for a flat face and for a vertex pressed into a face, and for
-//     a tilted face it does not change to first order with the tilt, so the contact's height
-//     and tilt stiffnesses are symmetric; the largest overlap (at the lower edge) would grow
-//     with the tilt while the point moves, a non-conservative coupling that makes a sliding
-//     block rock and chatter (validation/contact/friction); point: see step 5;
+//     uniform gap gives exactly eps_a + eps_b - gap, whatever the mesh); point: see step 5;
 //     normal = the deepest member's normal, averaged (overlap-weighted) over the members tied
 //     with it to 1e-6 (eps_a + eps_b) (a flat face). The deepest pair is the pair of closest
 //     points of the two surfaces, whose direction is the contact normal of two convex bodies;
@@ -170,11 +163,6 @@ struct ReductionWorkspace {
   };
   std::vector<Raw> raw;
   std::vector<int> parent, order, label, cls, absorbed, seeds, alive, group;
-  struct PatchMember {
-    int raw;                       // index into raw
-    Eigen::Vector3d area_centroid; // of its contact polygon
-  };
-  std::vector<PatchMember> patch; // one cluster's polygon members (step 4)
 };
 
 // Reduces `n` triangle-pair contacts of one pair (entries with overlap <= 0 are ignored) and
