@@ -24,35 +24,35 @@ ContactStats &ContactStats::operator+=(const ContactStats &o) {
 namespace {
 
 // Scratch reused across calls on the same thread, so that a call allocates nothing once
-// the buffers have grown. Holds no state that outlives a call.
+// the buffers have grown. Holds no state that outlives a call. `pairs` only grows (its
+// first `count` entries are this call's), so it is not re-initialised on every call.
 struct Workspace {
   TriangleBoxes boxes_a, boxes_b;
-  std::vector<std::uint8_t> keep;
+  CullScratch cull;
   std::vector<TrianglePairIndex> pairs;
   std::vector<TrianglePairDistance> results;
 };
 
-void collect_candidates(const TriangleSoA &a, const TriangleSoA &b, double margin, bool cull,
-                        Workspace &ws) {
+// Fills ws.pairs[0, count) with the candidate pairs in row-major order; returns count.
+// Culling: each triangle box computed once per call; the two-stage cull of
+// triangle_boxes.h (keeps exactly the pairs of the full box cull).
+int collect_candidates(const TriangleSoA &a, const TriangleSoA &b, double margin, bool cull,
+                       Workspace &ws) {
   const int na = a.num_triangles(), nb = b.num_triangles();
-  ws.pairs.clear();
+  const std::size_t all = static_cast<std::size_t>(na) * static_cast<std::size_t>(nb);
+  if (ws.pairs.size() < all)
+    ws.pairs.resize(all);
+  TrianglePairIndex *pairs = ws.pairs.data();
   if (!cull) {
-    ws.pairs.reserve(static_cast<std::size_t>(na) * nb);
+    int k = 0;
     for (int i = 0; i < na; ++i)
       for (int j = 0; j < nb; ++j)
-        ws.pairs.push_back({i, j});
-    return;
+        pairs[k++] = {i, j};
+    return k;
   }
   compute_triangle_boxes(a, ws.boxes_a);
   compute_triangle_boxes(b, ws.boxes_b);
-  ws.keep.resize(static_cast<std::size_t>(nb));
-  for (int i = 0; i < na; ++i) {
-    if (overlapping_boxes(ws.boxes_a, i, ws.boxes_b, margin, ws.keep.data()) == 0)
-      continue;
-    for (int j = 0; j < nb; ++j)
-      if (ws.keep[j])
-        ws.pairs.push_back({i, j});
-  }
+  return cull_triangle_pairs(ws.boxes_a, ws.boxes_b, margin, ws.cull, pairs);
 }
 
 // Runs the chosen kernel on pairs [first, last) of the list; `first` is a batch boundary.
@@ -87,8 +87,7 @@ void find_triangle_contacts(const TriangleSoA &a, double eps_a, const TriangleSo
     throw std::invalid_argument("find_triangle_contacts: batch_size must be >= 1");
   static thread_local Workspace ws;
   const double cutoff = eps_a + eps_b;
-  collect_candidates(a, b, cutoff, opt.cull, ws);
-  const int count = static_cast<int>(ws.pairs.size());
+  const int count = collect_candidates(a, b, cutoff, opt.cull, ws);
   stats.triangle_pairs_tested += count;
   stats.triangle_pairs_culled +=
       static_cast<long long>(a.num_triangles()) * b.num_triangles() - count;

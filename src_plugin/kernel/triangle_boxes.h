@@ -7,9 +7,18 @@
 // them is <= m. The gap between boxes never exceeds the Euclidean distance between the
 // triangles they contain, so a pair of triangles closer than m always survives the cull;
 // the cull may keep pairs that are farther apart (boxes are conservative).
+//
+// Two-stage cull (cull_triangle_pairs): stage 1 tests every triangle box of a against the
+// whole box of b and every triangle box of b against the whole box of a (each grown by the
+// margin on the side where the pair test grows it); stage 2 runs the pair test only among
+// the survivors of both. Since a triangle box lies inside its whole box and x -> fl(x + m)
+// is monotone, every pair the full pair test keeps survives stage 1, so the two-stage
+// cull keeps exactly the pairs of the full cull (same floating-point comparisons), in the
+// same order (a index, then b index, ascending).
 #pragma once
 
 #include "aligned_vector.h"
+#include "distance_kernels.h"
 #include "triangle_soa.h"
 
 #include <cstdint>
@@ -19,18 +28,47 @@ namespace tri {
 struct TriangleBoxes {
   AlignedVector<double> lo_x, lo_y, lo_z; // per-triangle minimum corner
   AlignedVector<double> hi_x, hi_y, hi_z; // per-triangle maximum corner
+  // Box of all triangles (componentwise min of lo / max of hi); filled by
+  // compute_triangle_boxes. Empty set: lo = +inf, hi = -inf (overlaps nothing).
+  double all_lo[3] = {0, 0, 0}, all_hi[3] = {0, 0, 0};
 
   int num_triangles() const { return static_cast<int>(lo_x.size()); }
 };
 
 // Fills `boxes` (resized; capacity kept, so repeated calls do not allocate) with the
-// bounding box of every triangle of `soa`. Vectorised over triangles.
+// bounding box of every triangle of `soa`, and their whole box. Vectorised over triangles.
 void compute_triangle_boxes(const TriangleSoA &soa, TriangleBoxes &boxes);
 
 // keep[j] = 1 if box i of `a` and box j of `b` overlap with margin `margin` (see above),
 // else 0, for j = 0 .. b.num_triangles()-1. Vectorised over j. `keep` must hold
-// b.num_triangles() bytes. Returns the number of kept boxes.
+// b.num_triangles() bytes. Returns the number of kept boxes. (The single-row full cull;
+// cull_triangle_pairs keeps the same pairs at a fraction of the cost.)
 int overlapping_boxes(const TriangleBoxes &a, int i, const TriangleBoxes &b, double margin,
                       std::uint8_t *keep);
+
+// Stage 1, a side: writes to `index` (ascending) every i whose box in `a` overlaps the box
+// [lo, hi] (the whole box of b) with margin `margin`, growing a's box as the pair test
+// does. Returns the count. `index` must hold a.num_triangles() ints.
+int boxes_near_box_as_a(const TriangleBoxes &a, const double lo[3], const double hi[3],
+                        double margin, int *index);
+// Stage 1, b side: the same for the boxes of `b` against [lo, hi] (the whole box of a),
+// growing [lo, hi] as the pair test grows a's boxes.
+int boxes_near_box_as_b(const double lo[3], const double hi[3], const TriangleBoxes &b,
+                        double margin, int *index);
+
+// Scratch of cull_triangle_pairs (reuse it across calls: nothing is allocated once grown).
+struct CullScratch {
+  AlignedVector<int> index_a, index_b;     // stage-1 survivors
+  AlignedVector<double> lo_x, lo_y, lo_z;  // boxes of b's survivors, compacted
+  AlignedVector<double> hi_x, hi_y, hi_z;
+  AlignedVector<std::int32_t> keep;        // stage-2 mask of one row
+};
+
+// Two-stage cull of all pairs (i of a, j of b): writes to `pairs` every pair whose boxes
+// overlap with margin `margin`, exactly the pairs overlapping_boxes keeps, in row-major
+// order (i, then j ascending). `pairs` must hold a.num_triangles() * b.num_triangles()
+// entries. Returns the number of pairs written.
+int cull_triangle_pairs(const TriangleBoxes &a, const TriangleBoxes &b, double margin,
+                        CullScratch &scratch, TrianglePairIndex *pairs);
 
 } // namespace tri

@@ -1,5 +1,6 @@
 // Triangle boxes and the box cull (triangle_boxes.h): boxes contain their triangles, and the
-// cull keeps every pair closer than the margin.
+// cull keeps every pair closer than the margin; the two-stage cull keeps exactly the full
+// cull's pairs.
 #include "distance_kernels.h"
 #include "test_particles.h"
 #include "triangle_boxes.h"
@@ -59,4 +60,82 @@ TEST(TriangleBoxes, CullNeverDropsAPairCloserThanTheMargin) {
   }
   EXPECT_GT(close_pairs, 100); // the test sees contacts ...
   EXPECT_GT(culled, 1000);     // ... and the cull does remove pairs
+}
+
+// The two-stage cull (whole box first, then pairs among survivors) keeps exactly the pairs
+// of the full cull, in row-major order, and so every pair within the layer; random
+// particles of different sizes and triangle counts, shifts from deep overlap to apart.
+TEST(TriangleBoxes, TwoStageCullKeepsExactlyTheFullCullsPairs) {
+  long long close_pairs = 0, kept_pairs = 0, all_pairs = 0;
+  CullScratch scratch;
+  for (int seed = 0; seed < 300; ++seed) {
+    std::mt19937_64 rng(7000 + seed);
+    const TriangleSoA a = to_soa(tri_test::test_particle(6 + 2 * (seed % 18), 1.0, 300 + seed));
+    const TriangleSoA body = to_soa(tri_test::test_particle(
+        6 + 2 * ((seed * 7) % 20), tri_test::uniform(rng, 0.3, 2.0), 900 + seed));
+    const int na = a.num_triangles(), nb = body.num_triangles();
+    TriangleSoA b;
+    const double reach = tri_test::uniform(rng, 0.2, 2.5);
+    const Eigen::Vector3d shift(tri_test::uniform(rng, -reach, reach),
+                                tri_test::uniform(rng, -reach, reach),
+                                tri_test::uniform(rng, -reach, reach));
+    transform_soa(body, tri_test::random_rotation(rng), shift, b);
+    const double margin = tri_test::uniform(rng, 0.0, 0.2);
+    TriangleBoxes ba, bb;
+    compute_triangle_boxes(a, ba);
+    compute_triangle_boxes(b, bb);
+    std::vector<TrianglePairIndex> full, two(static_cast<std::size_t>(na) * nb);
+    std::vector<std::uint8_t> keep(nb);
+    for (int i = 0; i < na; ++i) {
+      overlapping_boxes(ba, i, bb, margin, keep.data());
+      for (int j = 0; j < nb; ++j)
+        if (keep[j])
+          full.push_back({i, j});
+    }
+    const int count = cull_triangle_pairs(ba, bb, margin, scratch, two.data());
+    ASSERT_EQ(count, static_cast<int>(full.size())) << "seed " << seed;
+    for (int k = 0; k < count; ++k) {
+      ASSERT_EQ(two[k].a, full[k].a) << "seed " << seed << " entry " << k;
+      ASSERT_EQ(two[k].b, full[k].b) << "seed " << seed << " entry " << k;
+    }
+    // Every pair within the layer is among them.
+    std::vector<std::uint8_t> in_two(static_cast<std::size_t>(na) * nb, 0);
+    for (int k = 0; k < count; ++k)
+      in_two[static_cast<std::size_t>(two[k].a) * nb + two[k].b] = 1;
+    for (int i = 0; i < na; ++i)
+      for (int j = 0; j < nb; ++j) {
+        TrianglePairIndex p{i, j};
+        TrianglePairDistance d;
+        brute_force_scalar_distances(a, b, &p, 1, &d);
+        if (d.distance < margin) {
+          ++close_pairs;
+          ASSERT_TRUE(in_two[static_cast<std::size_t>(i) * nb + j])
+              << "seed " << seed << " pair " << i << "," << j;
+        }
+      }
+    kept_pairs += count;
+    all_pairs += static_cast<long long>(na) * nb;
+  }
+  EXPECT_GT(close_pairs, 1000);          // the test sees contacts ...
+  EXPECT_LT(kept_pairs, all_pairs / 2);  // ... and the cull removes most pairs
+}
+
+TEST(TriangleBoxes, WholeBoxContainsTriangleBoxesAndEmptySetCullsAll) {
+  const TriangleSoA soa = to_soa(tri_test::test_particle(40, 4e-3, 2));
+  TriangleBoxes boxes;
+  compute_triangle_boxes(soa, boxes);
+  for (int t = 0; t < 40; ++t) {
+    EXPECT_LE(boxes.all_lo[0], boxes.lo_x[t]);
+    EXPECT_LE(boxes.all_lo[1], boxes.lo_y[t]);
+    EXPECT_LE(boxes.all_lo[2], boxes.lo_z[t]);
+    EXPECT_GE(boxes.all_hi[0], boxes.hi_x[t]);
+    EXPECT_GE(boxes.all_hi[1], boxes.hi_y[t]);
+    EXPECT_GE(boxes.all_hi[2], boxes.hi_z[t]);
+  }
+  TriangleBoxes none;
+  compute_triangle_boxes(TriangleSoA{}, none);
+  CullScratch scratch;
+  std::vector<TrianglePairIndex> pairs(1);
+  EXPECT_EQ(cull_triangle_pairs(boxes, none, 1.0, scratch, pairs.data()), 0);
+  EXPECT_EQ(cull_triangle_pairs(none, boxes, 1.0, scratch, pairs.data()), 0);
 }
