@@ -14,8 +14,6 @@ where the stored elastic energy is exactly zero.
 """
 import argparse
 import os
-import platform
-import subprocess
 import sys
 
 import numpy as np
@@ -23,7 +21,9 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "validation", "meshes"))
+sys.path.insert(0, os.path.join(ROOT, "validation"))
 import meshgen  # noqa: E402
+import valtools  # noqa: E402
 
 TARGET = 0.01  # max relative drift of the total energy
 KN = 2000.0
@@ -39,16 +39,7 @@ CASES = [
 
 
 def run(exe, deck, variables, log):
-    cmd = [exe, "-in", deck, "-log", "none"]
-    for k, v in variables.items():
-        cmd += ["-var", k, str(v)]
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-               OMP_NUM_THREADS="1")
-    with open(log, "w") as out:
-        r = subprocess.run(cmd, cwd=HERE, stdout=out, stderr=subprocess.STDOUT, env=env)
-    if r.returncode != 0:
-        sys.exit(f"{' '.join(cmd)} failed, see {log}")
-    return " ".join(cmd)
+    return " ".join(valtools.run_deck(exe, deck, variables, HERE, log, exit_on_error=True))
 
 
 def read_energy_dump(path):
@@ -134,16 +125,7 @@ def main():
         single.append((seed, row))
 
     # ---- tables
-    cpu = "unknown CPU"
-    try:
-        for l in open("/proc/cpuinfo"):
-            if l.startswith("model name"):
-                cpu = l.split(":", 1)[1].strip()
-                break
-    except OSError:
-        pass
-    print(f"machine: {platform.node()}, {cpu}, {os.cpu_count()} cores; OMP_NUM_THREADS=1, "
-          "1 MPI rank")
+    print(valtools.machine_line(cores=True))
     print(f"contact time t_c = pi sqrt(m_eff/kn): rock-rock {tc_pp:.3g} s, rock-wall "
           f"{tc_pw:.3g} s (kn = {KN:g} N/m, lightest rock {m.min():.3g} kg)")
     print()

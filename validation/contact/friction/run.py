@@ -12,34 +12,23 @@ Prints the table, writes friction.png next to this script.
 import argparse
 import math
 import os
-import platform
-import subprocess
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.abspath(os.path.join(HERE, "..", "..", ".."))
 sys.path.insert(0, os.path.join(REPO, "validation", "meshes"))
+sys.path.insert(0, os.path.join(REPO, "validation"))
 import meshgen  # noqa: E402
+import valtools  # noqa: E402
 
 S, N, MU, KT, G = 0.004, 2, 0.5, 1000.0, 9.81
 THETAS = (10, 20, 25, 30, 35, 40)
 TOL_A = 0.02
 
 
-def read(path):
-    with open(path) as f:
-        return [[float(v) for v in l.split()] for l in f if l.strip() and not l.startswith("#")]
-
-
-def slope(ts, vs):
-    mt, mv = sum(ts) / len(ts), sum(vs) / len(vs)
-    return sum((t - mt) * (v - mv) for t, v in zip(ts, vs)) / sum((t - mt) ** 2 for t in ts)
-
-
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--exe", default=os.environ.get(
-        "LIGGGHTS_TRI", os.path.join(REPO, "build", "src_plugin", "driver", "liggghts-tri")))
+    ap.add_argument("--exe", default=valtools.default_exe())
     ap.add_argument("--work", default="/tmp/liggghts-tri-validation/friction")
     ap.add_argument("--reuse", action="store_true")
     args = ap.parse_args()
@@ -47,23 +36,19 @@ def main():
     os.makedirs(args.work, exist_ok=True)
     meshgen.write_stl(os.path.join(args.work, "cube.stl"), *meshgen.cube(N, S))
     meshgen.write_stl(os.path.join(args.work, "plane.stl"), *meshgen.plane(0.015))
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-               OMP_NUM_THREADS="1")
     res = []
     for th in THETAS:
         out = "tilt_%d.txt" % th
         if not (args.reuse and os.path.exists(os.path.join(args.work, out))):
-            cmd = [exe, "-in", os.path.join(HERE, "in.tilt"), "-log", "none", "-var", "out", out,
-                   "-var", "theta", str(th), "-var", "mu", str(MU), "-var", "kt", str(KT),
-                   "-var", "mesh", "cube.stl", "-var", "plane", "plane.stl", "-var", "s", str(S)]
-            with open(os.path.join(args.work, out + ".screen"), "w") as screen:
-                subprocess.run(cmd, cwd=args.work, env=env, check=True, stdout=screen,
-                               stderr=subprocess.STDOUT)
-        rows = read(os.path.join(args.work, out))
+            valtools.run_deck(exe, os.path.join(HERE, "in.tilt"),
+                              dict(out=out, theta=th, mu=MU, kt=KT, mesh="cube.stl",
+                                   plane="plane.stl", s=S),
+                              args.work, os.path.join(args.work, out + ".screen"))
+        rows = valtools.read_rows(os.path.join(args.work, out))
         m = rows[0][5]
         t = math.radians(th)
         half = rows[len(rows) // 2:]
-        a_fit = slope([r[0] for r in half], [r[3] for r in half])
+        a_fit = valtools.slope([r[0] for r in half], [r[3] for r in half])
         a_an = G * (math.sin(t) - MU * math.cos(t))
         creep = m * G * math.sin(t) / KT
         r = dict(theta=th, rows=rows, a=a_fit, a_an=a_an, creep=creep,
@@ -78,13 +63,7 @@ def main():
             r["ok"] = abs(r["drift"]) <= 0.1 * creep
         res.append(r)
 
-    cpu = "unknown CPU"
-    try:
-        with open("/proc/cpuinfo") as f:
-            cpu = next(l.split(":", 1)[1].strip() for l in f if l.startswith("model name"))
-    except (OSError, StopIteration):
-        pass
-    print("machine: %s, %s; 1 MPI rank, OMP_NUM_THREADS=1" % (platform.node(), cpu))
+    print(valtools.machine_line())
     print("cube N=%d (%d triangles), side %g m, mass %.6g kg, mu = %g (atan mu = %.2f deg), "
           "kt = %g N/m; defaults of in.tilt otherwise" % (N, 12 * N * N, S, res[0]["rows"][0][5],
                                                         MU, math.degrees(math.atan(MU)), KT))

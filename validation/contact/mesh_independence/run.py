@@ -17,14 +17,14 @@ across resolutions within 5 %.
 """
 import argparse
 import os
-import platform
-import subprocess
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.abspath(os.path.join(HERE, "..", "..", ".."))
 sys.path.insert(0, os.path.join(REPO, "validation", "meshes"))
+sys.path.insert(0, os.path.join(REPO, "validation"))
 import meshgen  # noqa: E402
+import valtools  # noqa: E402
 
 S, EPS, KN, GAMMAN, RHO, G = 0.004, 1e-4, 200.0, 1200.0, 2500.0, 9.81
 DT, STEPS = 2e-5, 3000
@@ -34,26 +34,10 @@ TOL_F, TOL_D = 0.01, 0.05
 
 
 def run(exe, work, out, variables, reuse=False):
-    if reuse and os.path.exists(os.path.join(work, out)):
-        return read(os.path.join(work, out))
-    cmd = [exe, "-in", os.path.join(HERE, "in.rest"), "-log", "none", "-var", "out", out]
-    for k, v in variables.items():
-        cmd += ["-var", k, str(v)]
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-               OMP_NUM_THREADS="1")
-    with open(os.path.join(work, out + ".screen"), "w") as screen:
-        subprocess.run(cmd, cwd=work, env=env, check=True, stdout=screen,
-                       stderr=subprocess.STDOUT)
-    return read(os.path.join(work, out))
-
-
-def read(path):
-    rows = []
-    with open(path) as f:
-        for line in f:
-            if not line.startswith("#") and line.strip():
-                rows.append([float(v) for v in line.split()])
-    return rows
+    if not (reuse and os.path.exists(os.path.join(work, out))):
+        valtools.run_deck(exe, os.path.join(HERE, "in.rest"), dict(out=out, **variables), work,
+                          os.path.join(work, out + ".screen"))
+    return valtools.read_rows(os.path.join(work, out))
 
 
 def mean(rows, k):
@@ -63,8 +47,7 @@ def mean(rows, k):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--exe", default=os.environ.get(
-        "LIGGGHTS_TRI", os.path.join(REPO, "build", "src_plugin", "driver", "liggghts-tri")))
+    ap.add_argument("--exe", default=valtools.default_exe())
     ap.add_argument("--work", default="/tmp/liggghts-tri-validation/mesh_independence")
     ap.add_argument("--reuse", action="store_true",
                     help="re-read traces already in --work instead of running the decks")
@@ -97,13 +80,7 @@ def main():
                     r["F_wall"], r["d_wall"] = fa, d_wall
                 res.append(r)
 
-    cpu = "unknown CPU"
-    try:
-        with open("/proc/cpuinfo") as f:
-            cpu = next(l.split(":", 1)[1].strip() for l in f if l.startswith("model name"))
-    except (OSError, StopIteration):
-        pass
-    print("machine: %s, %s; 1 MPI rank, OMP_NUM_THREADS=1" % (platform.node(), cpu))
+    print(valtools.machine_line())
     print("cube side %g m, mass %.6g kg, weight mg = %.6g N, eps = %g m, kn = %g N/m, "
           "gamman = %g 1/s, dt = %g s, %d steps" % (S, res[0]["rows"][0][7], res[0]["w"], EPS,
                                                     KN, GAMMAN, DT, STEPS))

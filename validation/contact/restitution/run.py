@@ -11,14 +11,14 @@ restitution.png next to this script. Needs Debian's matplotlib (/usr/bin/python3
 import argparse
 import math
 import os
-import platform
-import subprocess
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.abspath(os.path.join(HERE, "..", "..", ".."))
 sys.path.insert(0, os.path.join(REPO, "validation", "meshes"))
+sys.path.insert(0, os.path.join(REPO, "validation"))
 import meshgen  # noqa: E402
+import valtools  # noqa: E402
 
 R, EPS, KN, RHO, V0, G = 0.002, 1e-4, 2.0e4, 2500.0, 0.5, 9.81
 LEVEL = 3                       # 1280 triangles
@@ -78,16 +78,6 @@ def textbook(kn, meff, gamman):
     return math.pi / (w0 * math.sqrt(1 - z * z)), math.exp(-math.pi * z / math.sqrt(1 - z * z))
 
 
-def read_trace(path):
-    rows = []
-    with open(path) as f:
-        for line in f:
-            if line.startswith("#") or not line.strip():
-                continue
-            rows.append([float(v) for v in line.split()])
-    return rows
-
-
 def measure(rows):
     """Contact = the steps with a non-zero contact force. e from the velocities of the step
     before and the step after; duration = number of force steps x dt (+- dt)."""
@@ -101,21 +91,14 @@ def measure(rows):
 
 
 def run(exe, deck, work, out, variables):
-    # (not "-screen none": LIGGGHTS 3.8's STL reader then writes to a null FILE* and crashes)
-    cmd = [exe, "-in", os.path.join(HERE, deck), "-log", "none", "-var", "out", out]
-    for k, v in variables.items():
-        cmd += ["-var", k, str(v)]
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-               OMP_NUM_THREADS="1")
-    with open(os.path.join(work, out + ".screen"), "w") as screen:
-        subprocess.run(cmd, cwd=work, env=env, check=True, stdout=screen, stderr=subprocess.STDOUT)
-    return read_trace(os.path.join(work, out))
+    valtools.run_deck(exe, os.path.join(HERE, deck), dict(out=out, **variables), work,
+                      os.path.join(work, out + ".screen"))
+    return valtools.read_rows(os.path.join(work, out))
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--exe", default=os.environ.get(
-        "LIGGGHTS_TRI", os.path.join(REPO, "build", "src_plugin", "driver", "liggghts-tri")))
+    ap.add_argument("--exe", default=valtools.default_exe())
     ap.add_argument("--work", default="/tmp/liggghts-tri-validation/restitution")
     args = ap.parse_args()
     exe = os.path.abspath(args.exe)
@@ -162,13 +145,7 @@ def main():
                     results.append(r)
                     traces[(engine, pair, e_t, limit)] = rows
 
-    cpu = "unknown CPU"
-    try:
-        with open("/proc/cpuinfo") as f:
-            cpu = next(l.split(":", 1)[1].strip() for l in f if l.startswith("model name"))
-    except (OSError, StopIteration):
-        pass
-    print("machine: %s, %s; 1 MPI rank, OMP_NUM_THREADS=1" % (platform.node(), cpu))
+    print(valtools.machine_line())
     print("icosphere level %d (%d triangles), R = %g m, mass = %.6g kg, eps = %g m, kn = %g N/m, "
           "v0 = %g m/s, dt = %g s" % (LEVEL, len(faces), R, mass, EPS, KN, V0, DT))
     print("| case | engine | limitForce | zeta | gamman (1/s) | e textbook | e analytic | e measured"

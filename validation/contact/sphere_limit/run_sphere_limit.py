@@ -32,8 +32,6 @@ region is the full cross-section between z = 1 and z = 5 sphere diameters above 
 import argparse
 import math
 import os
-import platform
-import subprocess
 import sys
 
 import numpy as np
@@ -41,7 +39,9 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "validation", "meshes"))
+sys.path.insert(0, os.path.join(ROOT, "validation"))
 import meshgen  # noqa: E402
+import valtools  # noqa: E402
 
 R, LEVEL, EPS, DENSITY = 0.002, 2, 5e-5, 2500.0
 HALF, HEIGHT = 0.008, 0.060       # box: x, y in [-HALF, HALF], z in [0, HEIGHT]
@@ -70,15 +70,7 @@ def envelope(level, radius, eps):
 
 
 def run(exe, deck, variables, log, threads=1):
-    cmd = [exe, "-in", deck, "-log", "none"]
-    for k, v in variables.items():
-        cmd += ["-var", k, str(v)]
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-               OMP_NUM_THREADS=str(threads))
-    with open(log, "w") as out:
-        r = subprocess.run(cmd, cwd=HERE, stdout=out, stderr=subprocess.STDOUT, env=env)
-    if r.returncode != 0:
-        sys.exit(f"{' '.join(cmd)} failed, see {log}")
+    cmd = valtools.run_deck(exe, deck, variables, HERE, log, threads, exit_on_error=True)
     return " ".join(cmd), loop_time(log)
 
 
@@ -199,16 +191,7 @@ def main():
     spread = np.array([r[3]["phi"] for r in sph])
     tri_phi = np.array([r[3]["phi"] for r in tris])
 
-    cpu = "unknown CPU"
-    try:
-        for l in open("/proc/cpuinfo"):
-            if l.startswith("model name"):
-                cpu = l.split(":", 1)[1].strip()
-                break
-    except OSError:
-        pass
-    print(f"machine: {platform.node()}, {cpu}, {os.cpu_count()} cores; OMP_NUM_THREADS=1, "
-          "1 MPI rank")
+    print(valtools.machine_line(cores=True))
     print(f"icosphere level {LEVEL}: R = {R * 1e3:g} mm, epsilon = {EPS * 1e3:g} mm, mesh volume "
           f"{v_mesh * 1e9:.4f} mm^3, envelope volume {v_env * 1e9:.4f} mm^3, mass {mass:.4g} kg")
     print(f"R_env,v = {r_env * 1e3:.4f} mm, R + eps = {r_vertex * 1e3:.4f} mm; region z in "

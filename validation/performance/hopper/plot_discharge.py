@@ -18,33 +18,14 @@ before the hopper empties, a sign of arching. Prints a markdown table; writes di
 import argparse
 import json
 import os
+import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", ".."))
+import valtools  # noqa: E402
 
 LABELS = {"spheres20": "spheres, 20-tri volume", "spheres40": "spheres, 40-tri volume",
           "tri20": "rocks, 20 triangles", "tri40": "rocks, 40 triangles"}
-
-
-def read(path):
-    rows = []
-    with open(path) as f:
-        for line in f:
-            if line.startswith("#") or not line.strip():
-                continue
-            t, n, m = line.split()[:3]
-            rows.append([float(t), int(float(n)), float(m)])
-    return rows
-
-
-def fit(x, y):
-    n = len(x)
-    mx, my = sum(x) / n, sum(y) / n
-    sxx = sum((a - mx) ** 2 for a in x)
-    sxy = sum((a - mx) * (b - my) for a, b in zip(x, y))
-    slope = sxy / sxx
-    res = [b - (my + slope * (a - mx)) for a, b in zip(x, y)]
-    rms = (sum(r * r for r in res) / n) ** 0.5
-    return slope, my - slope * mx, rms
 
 
 def analyse(rows, particles, lo=0.30, hi=0.85):
@@ -58,8 +39,8 @@ def analyse(rows, particles, lo=0.30, hi=0.85):
            "final_m": m[-1], "t_end": t[-1]}
     if i0 is None or i1 - i0 < 3:
         return out
-    k, c, rms = fit(t[i0:i1 + 1], m[i0:i1 + 1])
-    kn, cn, _ = fit(t[i0:i1 + 1], n[i0:i1 + 1])
+    k, c, rms = valtools.fit(t[i0:i1 + 1], m[i0:i1 + 1])
+    kn, cn, _ = valtools.fit(t[i0:i1 + 1], n[i0:i1 + 1])
     # longest pause with particles still inside, after the first has left
     pause, since = 0.0, None
     for i in range(first, len(n)):
@@ -88,7 +69,7 @@ def main():
     if a.file:
         for spec in a.file:
             label, path = spec.split("=", 1)
-            series.append((label, read(path), a.particles))
+            series.append((label, valtools.read_discharge(path), a.particles))
     else:
         with open(os.path.join(a.study, "results.json")) as f:
             data = json.load(f)

@@ -36,7 +36,8 @@ REPO = os.path.abspath(os.path.join(HERE, "..", "..", ".."))
 HOPPER = os.path.join(REPO, "examples", "hopper")
 DT = 2e-5  # the decks' time step
 
-MPI_ENV = {"OMPI_ALLOW_RUN_AS_ROOT": "1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM": "1"}
+sys.path.insert(0, os.path.join(REPO, "validation"))
+import valtools  # noqa: E402
 
 
 def sh(cmd):
@@ -142,9 +143,7 @@ class Runner:
             if ranks * spec.get("threads", 1) > (os.cpu_count() or 1):
                 cmd.append("--oversubscribe")
             cmd += ["-x", "OMP_NUM_THREADS"]
-        cmd += [exe, "-in", deck, "-log", os.path.join(out, "log.liggghts")]
-        for k, v in var.items():
-            cmd += ["-var", k, str(v)]
+        cmd += valtools.deck_command(exe, deck, var, log=os.path.join(out, "log.liggghts"))
         return cmd, out
 
     def run(self, spec):
@@ -153,7 +152,7 @@ class Runner:
             return self.results[name]
         cmd, out = self.command(spec)
         threads = spec.get("threads", 1)
-        env = dict(os.environ, OMP_NUM_THREADS=str(threads), **MPI_ENV)
+        env = valtools.run_env(threads)
         env_str = f"OMP_NUM_THREADS={threads} "
         printable = env_str + " ".join(shlex.quote(c) for c in cmd)
         load0 = loadavg()
@@ -179,7 +178,8 @@ class Runner:
         r.update(command=printable, rc=os.waitstatus_to_exitcode(status), wallclock=wall,
                  timed_out=timed_out,
                  cpu=ru.ru_utime + ru.ru_stime, load_before=load0, load_after=load1,
-                 discharge=read_discharge(os.path.join(out, "discharge.txt")))
+                 discharge=valtools.read_discharge(os.path.join(out, "discharge.txt"),
+                                                   missing_ok=True))
         ok = (r["rc"] == 0 and not r["nan"] and not r["lost"] and not r["error"]
               and r.get("atoms") == spec["n"] ** 3 and r["thermo_atoms"] == [spec["n"] ** 3])
         r["ok"] = ok
@@ -205,20 +205,6 @@ class Runner:
             json.dump({"machine": self.machine, "args": vars(self.args), "runs": self.results,
                        "load_start": self.load_start, "load_end": loadavg(),
                        "waited_s": self.waited}, f, indent=1)
-
-
-def read_discharge(path):
-    rows = []
-    try:
-        with open(path) as f:
-            for line in f:
-                if line.startswith("#") or not line.strip():
-                    continue
-                t, n, m = line.split()[:3]
-                rows.append([float(t), int(float(n)), float(m)])
-    except OSError:
-        pass
-    return rows
 
 
 def wait_for_quiet(threshold, max_wait):
