@@ -17,6 +17,6 @@ cd "$top/examples/falling"
 
 echo
 echo "ParaView: open $top/examples/hopper/post/particles.pvd"
-echo "          with $top/examples/hopper/meshes/funnel.stl and floor.stl for the hopper"
+echo "          with the hopper mesh series $top/examples/hopper/post/hopper_*.stl"
 echo "          and $top/examples/falling/post/particles.pvd (picture: post/falling.png)"
 echo "Discharge: $top/examples/hopper/post/discharge.txt"
