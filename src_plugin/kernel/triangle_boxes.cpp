@@ -51,6 +51,22 @@ int overlapping_boxes(const TriangleBoxes &a, int i, const TriangleBoxes &b, dou
   return kept;
 }
 
+namespace {
+
+// Turns a 0/1 mask stored in index[0..n) into the list of set positions, in place and without
+// branches: index[count] is written only at positions <= t, after mask[t] was read.
+int compress_mask(int *index, int n) {
+  int count = 0;
+  for (int t = 0; t < n; ++t) {
+    const int m = index[t];
+    index[count] = t;
+    count += m;
+  }
+  return count;
+}
+
+} // namespace
+
 int boxes_near_box_as_a(const TriangleBoxes &a, const double lo[3], const double hi[3],
                         double margin, int *index) {
   // The pair test keeps (i, j) only if b.lo[j] <= a.hi[i] + m and b.hi[j] >= a.lo[i] - m;
@@ -66,13 +82,7 @@ int boxes_near_box_as_a(const TriangleBoxes &a, const double lo[3], const double
   for (int t = 0; t < n; ++t)
     mask[t] = (lx <= ahx[t] + margin) & (hx >= alx[t] - margin) & (ly <= ahy[t] + margin) &
               (hy >= aly[t] - margin) & (lz <= ahz[t] + margin) & (hz >= alz[t] - margin);
-  int count = 0;
-  for (int t = 0; t < n; ++t) {
-    const int m = mask[t];
-    index[count] = t;
-    count += m;
-  }
-  return count;
+  return compress_mask(index, n);
 }
 
 int boxes_near_box_as_b(const double lo[3], const double hi[3], const TriangleBoxes &b,
@@ -89,13 +99,7 @@ int boxes_near_box_as_b(const double lo[3], const double hi[3], const TriangleBo
   for (int t = 0; t < n; ++t)
     mask[t] = (blx[t] <= hx) & (bhx[t] >= lx) & (bly[t] <= hy) & (bhy[t] >= ly) &
               (blz[t] <= hz) & (bhz[t] >= lz);
-  int count = 0;
-  for (int t = 0; t < n; ++t) {
-    const int m = mask[t];
-    index[count] = t;
-    count += m;
-  }
-  return count;
+  return compress_mask(index, n);
 }
 
 int cull_triangle_pairs(const TriangleBoxes &a, const TriangleBoxes &b, double margin,
