@@ -200,6 +200,13 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
     }
   }
   p.point = sum_wa > 0.0 ? Vector3d(sum_pa / sum_wa) : Vector3d(sum_p / sum_w);
+  if (sum_wa > 0.0 && area0 > 0.0) {
+    // Step 5b: the centre of pressure only where the faces are flat against each other; as the
+    // overlap over the patch becomes uneven the point slides to the deepest pair's midpoint.
+    const double unevenness = (s.overlap - sum_wa / area0) / layer;
+    const double w = std::min(1.0, std::max(0.0, 1.0 - unevenness / kFlatPatchBand));
+    p.point = s.point + w * (p.point - s.point);
+  }
   p.overlap = s.overlap;
   p.tri_a = s.tri_a;
   p.tri_b = s.tri_b;

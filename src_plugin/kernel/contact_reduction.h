@@ -69,6 +69,15 @@
 //     each other's footprint). The switch at 10 degrees moves the point by at most the width
 //     of the wedge where the layers overlap, (eps_a + eps_b) / tan(10 deg).
 //     The baselines (paper_min_width, none) keep the kernel's midpoints: they are the paper's.
+//  5b. Energy: the force is kn x the DEEPEST overlap, the gradient of 1/2 kn overlap^2 along
+//     the deepest pair, so only the deepest pair's midpoint makes the torque consistent with
+//     that energy. Applied at the centre of pressure of a face that is not flat against the
+//     other, it is not: a spinning rock whose face sweeps through an impact gained or lost
+//     16-18 % of its energy in one bounce (validation/contact/energy). So the point moves
+//     linearly from the centre of pressure (patch flat: deepest overlap = mean overlap over
+//     the polygons) to the deepest pair's midpoint as the unevenness (deepest - mean) / layer
+//     grows to kFlatPatchBand (2 %): a resting face keeps its meshing-independent centre, an
+//     impacting face conserves energy (one bounce: 0.01 %).
 //  6. The patch's extent, for the rocking damper of contact_force.h. The force of a contact
 //     acts at one point, so a rotation of the two bodies about that point (about an axis in
 //     the contact plane: one face rocking on the other) gives no normal velocity there and the
@@ -117,6 +126,10 @@
 #include <vector>
 
 namespace tri {
+
+// Step 5b: how uneven (deepest minus mean overlap over the contact polygons, as a fraction of
+// eps_a + eps_b) a face contact may be before its point leaves the centre of pressure.
+constexpr double kFlatPatchBand = 0.02;
 
 struct ContactPoint {
   Eigen::Vector3d point = Eigen::Vector3d::Zero();   // m, world frame
