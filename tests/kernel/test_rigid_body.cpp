@@ -182,12 +182,14 @@ TEST(RigidBody, AngularVelocityAndEnergyAreConsistent) {
   const Vector3d omega(1.0, -2.0, 0.5);
   const Vector3d l = tri::angmom_from_omega(q, omega, kAsymmetric);
   EXPECT_LT((tri::angular_velocity(q, l, kAsymmetric) - omega).norm(), 1e-14);
-  EXPECT_NEAR(tri::rotational_energy(q, l, kAsymmetric), 0.5 * omega.dot(l), 1e-25);
+  const double energy = 0.5 * omega.dot(l);
+  // A few roundings apart: relative 1e-13 (an absolute 1e-25 held only with FMA contraction).
+  EXPECT_NEAR(tri::rotational_energy(q, l, kAsymmetric), energy, 1e-13 * std::abs(energy));
   // Body frame: L_body = I omega_body component by component.
   const Vector3d lb = tri::body_angmom(q, l);
   const Vector3d wb = q.conjugate() * omega;
   for (int k = 0; k < 3; ++k)
-    EXPECT_NEAR(lb[k], kAsymmetric[k] * wb[k], 1e-24);
+    EXPECT_NEAR(lb[k], kAsymmetric[k] * wb[k], 1e-13 * l.norm());
 }
 
 TEST(RigidBody, RandomOrientationIsUnitDeterministicAndCanonical) {
