@@ -4,6 +4,7 @@
 
 #include "private_map_access.h"
 
+#include "compute_tri_erotate.h"
 #include "compute_tri_stats.h"
 #include "fix_tri_adapt_dt.h"
 #include "fix_tri_contact_history.h"
@@ -37,6 +38,7 @@ struct ComputeRow {
 
 const ComputeRow compute_table[] = {
     {"tri/stats", &make_compute<LAMMPS_NS::ComputeTriStats>},
+    {"tri/erotate", &make_compute<LAMMPS_NS::ComputeTriERotate>},
 };
 
 template <typename T> LAMMPS_NS::Pair *make_pair(LAMMPS_NS::LAMMPS *lmp) { return new T(lmp); }

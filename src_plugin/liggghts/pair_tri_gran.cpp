@@ -13,7 +13,6 @@
 #include <omp.h>
 
 #include <algorithm>
-#include <cstring>
 
 using namespace LAMMPS_NS;
 
@@ -51,20 +50,26 @@ void PairTriGran::init_granular() {
 
 void PairTriGran::interact(long k, int thread, double dt, bool update_history) {
   const Task &task = tasks_[k];
-  const int i = task.i, j = task.j;
+  const int a = task.swapped ? task.j : task.i, b = task.swapped ? task.i : task.j;
   tri::InteractionSettings s = settings_.interaction;
-  s.coefficients = materials_.get(atom->type[i], atom->type[j]);
-  // During setup LIGGGHTS evaluates forces without advancing the history (shearupdate off),
-  // so a restarted run continues bit for bit: work on a copy then.
+  s.coefficients = materials_.get(atom->type[a], atom->type[b]);
+  // The history is stored as seen from (i, j); the kernel sees it from (a, b). Swapping the
+  // roles negates the values that flip sign, exactly, as LIGGGHTS does for the partner. During
+  // setup LIGGGHTS evaluates forces without advancing the history (shearupdate off), so a
+  // restarted run continues bit for bit: work on a copy then.
   double scratch_history[tri::kHistoryDoubles];
   double *history = task.history;
-  if (history && !update_history) {
-    std::memcpy(scratch_history, history, sizeof(scratch_history));
+  if (history && (task.swapped || !update_history)) {
+    for (int v = 0; v < tri::kHistoryDoubles; ++v)
+      scratch_history[v] =
+          task.swapped && tri::history_flips_sign(v) ? -task.history[v] : task.history[v];
     history = scratch_history;
   }
-  results_[k] =
-      tri::body_interaction(particles_->body(i), particles_->body(j), s, dt, history, scratch_[thread],
-                            thread_tally_[thread].distance);
+  results_[k] = tri::body_interaction(particles_->body(a), particles_->body(b), s, dt, history,
+                                      scratch_[thread], thread_tally_[thread].distance);
+  if (task.history && task.swapped && update_history)
+    for (int v = 0; v < tri::kHistoryDoubles; ++v)
+      task.history[v] = tri::history_flips_sign(v) ? -scratch_history[v] : scratch_history[v];
 }
 
 void PairTriGran::compute_force(int eflag, int vflag, int) {
@@ -96,7 +101,7 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
         }
         continue;
       }
-      tasks_.push_back({i, j, history, touching});
+      tasks_.push_back({i, j, atom->tag[j] < atom->tag[i], history, touching});
     }
   }
   results_.assign(tasks_.size(), tri::PairForceResult{});
@@ -116,10 +121,12 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
       interact(k, 0, dt, update_history);
   }
 
-  // One thread, neighbour-list order: the sums do not depend on the thread count.
+  // One thread: the sums do not depend on the thread count.
   tally_ = tri::InteractionTally{};
   for (const tri::InteractionTally &t : thread_tally_)
     tally_.distance += t.distance;
+  const tagint *tag = atom->tag;
+  contributions_.clear();
   for (long k = 0; k < ntasks; ++k) {
     const Task &t = tasks_[k];
     const tri::PairForceResult &r = results_[k];
@@ -129,14 +136,28 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
                                 [](double v) { return v != 0.0; });
     if (r.contacts_after == 0)
       continue;
+    // r is the force on the pair's first atom (a) and the torques on both.
+    const int a = t.swapped ? t.j : t.i, b = t.swapped ? t.i : t.j;
+    Contribution ca{a, tag[b], {}, {}}, cb{b, tag[a], {}, {}};
     for (int d = 0; d < 3; ++d) {
-      f[t.i][d] += r.force_a[d];
-      torque[t.i][d] += r.torque_a[d];
+      ca.force[d] = r.force_a[d];
+      ca.torque[d] = r.torque_a[d];
+      cb.force[d] = -r.force_a[d];
+      cb.torque[d] = r.torque_b[d];
     }
-    if (newton || t.j < nlocal)
-      for (int d = 0; d < 3; ++d) {
-        f[t.j][d] -= r.force_a[d];
-        torque[t.j][d] += r.torque_b[d];
-      }
+    for (const Contribution &c : {ca, cb})
+      if (newton || c.atom < nlocal) // a is i or j; i is always owned
+        contributions_.push_back(c);
   }
+  // Stable: two images of one partner (a periodic box smaller than a particle's reach) keep
+  // the neighbour-list order.
+  std::stable_sort(contributions_.begin(), contributions_.end(),
+                   [](const Contribution &x, const Contribution &y) {
+                     return x.atom != y.atom ? x.atom < y.atom : x.partner < y.partner;
+                   });
+  for (const Contribution &c : contributions_)
+    for (int d = 0; d < 3; ++d) {
+      f[c.atom][d] += c.force[d];
+      torque[c.atom][d] += c.torque[d];
+    }
 }

@@ -12,8 +12,14 @@
 // and restarts. Requires newton_pair off, as every granular history pair style.
 //
 // Determinism: the per-pair work (OpenMP over particle pairs, or inside one pair) writes
-// results into a per-pair slot; forces are summed afterwards in neighbour-list order by one
-// thread, so the result does not depend on the thread count.
+// results into a per-pair slot, and one thread sums them afterwards, so the result does not
+// depend on the thread count. It does not depend on the number of MPI ranks either: every
+// pair is evaluated as (lower atom tag, higher atom tag), whichever atom the rank owns and
+// whichever order the neighbour list has them in (tri::body_interaction(b, a) equals
+// -body_interaction(a, b) only to rounding), and the contributions to an atom are summed in
+// the order of the partners' tags, not the neighbour list's, which follows the decomposition.
+// So a pair's force is bitwise the same on every rank that evaluates it, and so is each
+// atom's total.
 #pragma once
 
 #include "pair_gran.h"
@@ -43,6 +49,7 @@ protected:
 private:
   struct Task {
     int i, j;
+    bool swapped;    // evaluated as (j, i): tag[j] < tag[i]
     double *history; // kHistoryDoubles values in LIGGGHTS's contact history, or null
     int *touching;   // LIGGGHTS keeps (migrates, restarts) the history only where this is set
   };
@@ -51,8 +58,15 @@ private:
   tri_liggghts::MaterialTable materials_;
   std::vector<Task> tasks_;
   std::vector<tri::PairForceResult> results_;
-  std::vector<tri::InteractionScratch> scratch_;     // one per thread
-  std::vector<tri::InteractionTally> thread_tally_;  // one per thread
+  // One pair's force and torque on one atom, to be summed in partner-tag order.
+  struct Contribution {
+    int atom;
+    tagint partner;
+    double force[3], torque[3];
+  };
+  std::vector<Contribution> contributions_;
+  std::vector<tri::InteractionScratch> scratch_;    // one per thread
+  std::vector<tri::InteractionTally> thread_tally_; // one per thread
   tri::InteractionTally tally_;
 
   void interact(long k, int thread, double dt, bool update_history); // tasks_[k]
