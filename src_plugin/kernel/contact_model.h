@@ -99,13 +99,13 @@ Eigen::Vector3d tangential_force_no_history(const ContactCoefficients &c,
 // since b's material at p + r moves along n, relative to a's, at (w x r) . n = w . (r x n).
 // K n = 0: only w_perp = P w (rocking) is resisted, twisting about n is friction's business.
 // The force of that dashpot, integral of -(gamma_n / A)(w . (r x n)) n dA, is zero about the
-// area centroid and is neglected about the centre of pressure (the two coincide for parallel
-// faces), so the result is a pure couple: it changes no momentum, and it dissipates
+// area centroid, where a flat face contact's point is (contact_reduction.h step 5b; tilted, the
+// point moves towards the low side and that force is neglected), so the result is a pure couple: it changes no momentum, and it dissipates
 // (w . tau_b = -(gamma_n / A) w^T K w <= 0, K positive semi-definite). On a rocking face the
 // resisting normal velocities are those of the distributed pressure: the couple adds to the
 // point force's damping what the single point misses, so each in-plane axis gets damping
-// gamma_n J_axis / A against the rotational stiffness kn J_axis / A that the centre of
-// pressure gives a tilting face -- the damping ratio of the normal mode, for rocking.
+// gamma_n J_axis / A, that of a distributed dashpot (the stiffness of a tilting face comes from
+// the point moving towards its low side, contact_reduction.h step 5b).
 // With limit_force (a pressure that is nowhere negative) the couple is capped at
 // |F_n| sqrt(2 trace(J) / A) (F_n times the radius of the disk with the patch's ratio of polar
 // moment to area, the largest lever of a disk-shaped patch): a dashpot cannot pull the rising

@@ -166,8 +166,8 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
                         int seed, double layer, const Vector3d &ref, const Faces &faces) {
   ContactPoint p;
   const Raw &s = raw[seed];
-  Vector3d sum_p = Vector3d::Zero(), sum_n = Vector3d::Zero(), sum_pa = Vector3d::Zero();
-  double sum_w = 0.0, sum_wn = 0.0, sum_wa = 0.0;
+  Vector3d sum_n = Vector3d::Zero(), sum_tied = Vector3d::Zero();
+  double sum_wn = 0.0, sum_wa = 0.0;
   // Area moments of the polygons (step 6), relative to the seed's midpoint (near the patch, so
   // no digits are lost far from the world origin): zeroth, first, second.
   double area0 = 0.0;
@@ -183,11 +183,8 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
     ++p.num_merged;
     if (absorbed[i])
       continue; // rim contacts count, but neither place nor orient the contact
-    sum_p += r.overlap * r.point;
-    sum_w += r.overlap;
     ContactPolygon poly;
     if (member_polygon(r, faces, layer, poly)) {
-      sum_pa += poly.weight * poly.centroid;
       sum_wa += poly.weight;
       const Vector3d d = poly.area_centroid - s.point;
       area0 += poly.area;
@@ -196,18 +193,28 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
     }
     if (r.overlap >= s.overlap - kNormalDepthBand * layer) {
       sum_n += r.overlap * r.normal;
+      sum_tied += r.overlap * r.point;
       sum_wn += r.overlap;
     }
   }
-  p.point = sum_wa > 0.0 ? Vector3d(sum_pa / sum_wa) : Vector3d(sum_p / sum_w);
-  if (sum_wa > 0.0 && area0 > 0.0) {
-    // Step 5b: the centre of pressure only where the faces are flat against each other; as the
-    // overlap over the patch becomes uneven the point slides to the deepest pair's midpoint.
-    const double unevenness = (s.overlap - sum_wa / area0) / layer;
-    const double w = std::min(1.0, std::max(0.0, 1.0 - unevenness / kFlatPatchBand));
-    p.point = s.point + w * (p.point - s.point);
-  }
+  // The deepest pair's midpoint, averaged over the pairs tied with it (an edge lying flat:
+  // every point of it is a closest point, and the torque should not pick one end).
+  const Vector3d deepest = sum_tied / sum_wn;
+  p.point = deepest;
   p.overlap = s.overlap;
+  if (area0 > 0.0) {
+    // Step 5b: a face contact's force derives from the potential 1/2 kn overlap_s^2, with
+    // overlap_s = mean + h(deepest - mean) smooth across flat (see the header).
+    const double mean = sum_wa / area0;
+    const double uneven = std::max(0.0, s.overlap - mean);
+    const double r = uneven / (kFlatPatchBand * layer);
+    if (r < 1.0) {
+      const Vector3d area_centre = s.point + area1 / area0;
+      const double slide = 1.0 - (1.0 - r) * (1.0 - 3.0 * r); // h'(uneven)
+      p.point = area_centre + slide * (deepest - area_centre);
+      p.overlap = s.overlap - uneven * (1.0 - r) * (1.0 - r);
+    }
+  }
   p.tri_a = s.tri_a;
   p.tri_b = s.tri_b;
   const double len = sum_n.norm();

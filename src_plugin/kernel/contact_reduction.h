@@ -36,7 +36,8 @@
 //     exactly (their separation along n_M is the patch's own gap); a second face at 90
 //     degrees or more never does.
 //  4. One ContactPoint per class: overlap = the largest member overlap (so a flat patch at
-//     uniform gap gives exactly eps_a + eps_b - gap, whatever the mesh); point: see step 5;
+//     uniform gap gives exactly eps_a + eps_b - gap, whatever the mesh; within the flat band
+//     of step 5b, o_s); point: see steps 5 and 5b;
 //     normal = the deepest member's normal, averaged (overlap-weighted) over the members tied
 //     with it to 1e-6 (eps_a + eps_b) (a flat face). The deepest pair is the pair of closest
 //     points of the two surfaces, whose direction is the contact normal of two convex bodies;
@@ -44,40 +45,48 @@
 //     tilt a flat contact (measured: up to 5% lateral force for a tilted cube on a finely
 //     meshed plane); min_distance = the smallest member distance (for the paper's time-step
 //     rule); num_merged counts every member, absorbed ones included.
-//  5. The point, from the triangles themselves where faces are parallel. Where two faces are
-//     parallel every point of their overlap is a closest point, and the kernel returns one
-//     arbitrary closest pair (often a vertex): a centroid of such midpoints is off-centre by up
-//     to a triangle size (measured before this rule, 4 mm cube resting flat on a plane: 1.2 mm
-//     with 2 triangles per face on a 2-triangle plane, 0.26 mm with 128), a false torque that
-//     tips a resting cube, and a point that depends on the meshing. So each member whose two
-//     triangles are nearly parallel (within kParallelFaceAngle = 10 degrees, contact_polygon.h)
-//     gets its contact polygon: the overlap of the two triangles projected along their mean
-//     normal, cut to where the soft layers overlap, with weight = integral of the local overlap
-//     over it and centroid = its centre of pressure on the mid-surface. The triangles of a face
-//     partition it, so the polygons of all pairs of two faces tile the faces' overlap region,
-//     and the class's point = the weight-averaged centroid of its members' polygons is the
-//     centre of that region (of pressure, when the faces are slightly tilted: towards the side
-//     that presses harder, a restoring torque) for ANY meshing, to rounding. Members that are
-//     not nearly parallel (vertex-face, edge-edge, edge-face, faces at a clear angle) carry no
-//     area: in a class with polygons they do not move the point (their contact lies on the
-//     boundary of the faces' region anyway: a resting cube's side faces touch the plane along
-//     its bottom edges). A class without any polygon (area above kPatchAreaRounding of the
-//     smaller triangle) keeps the rule for points: the overlap-weighted centroid of the
-//     members' midpoints, the closest-point contact of a vertex, an edge or a tilted face.
-//     Absorbed rim contacts are excluded either way (they lie on one side of the patch
-//     wherever it is lopsided; their polygons are empty anyway: their triangles lie outside
-//     each other's footprint). The switch at 10 degrees moves the point by at most the width
-//     of the wedge where the layers overlap, (eps_a + eps_b) / tan(10 deg).
+//  5. The point: the gradient of the contact's energy. The force is kn x the deepest overlap,
+//     the gradient of 1/2 kn overlap^2 when it acts through the deepest pair of closest points
+//     (the overlap changes with the bodies' motion exactly as that pair's distance does), so
+//     the point is the deepest pair's midpoint, averaged over the members tied with it to
+//     1e-6 of the layer (an edge lying flat on a face: every point of it is a closest point,
+//     and the torque should not pick one end). Any other point -- an overlap-weighted centroid
+//     of the members, a centre of pressure -- gives a torque that is not the gradient of the
+//     energy and a tumbling rock gains or loses energy at every impact (measured,
+//     validation/contact/energy: a box of 32 rocks drifted 2.5 % in 1e5 steps with the
+//     weighted centroid, 16-18 % in one bounce with a centre of pressure; 0.09 % with this rule).
+//  5b. Faces lying flat on each other. There the deepest pair is arbitrary (any point of the
+//     faces' overlap is a closest point; the kernel returns one, often a vertex): a resting
+//     cube would be pushed at a corner, tip, and rest on a point that depends on the meshing;
+//     and the energy 1/2 kn max_overlap^2 has a kink at flat (tilting either way deepens one
+//     side). So each member whose two triangles are nearly parallel (within kParallelFaceAngle
+//     = 10 degrees, contact_polygon.h) gets its contact polygon: the overlap of the two
+//     triangles projected along their mean normal, cut to where the soft layers overlap, with
+//     area, area centroid and weight = integral of the local overlap over it. The triangles of
+//     a face partition it, so the polygons of all pairs of two faces tile the faces' overlap
+//     region for ANY meshing: the patch's area A, its area centre c_A and its mean overlap
+//     m = sum(weight) / A are the faces', to rounding. With uneven = deepest - m and
+//     r = uneven / (kFlatPatchBand x layer), the contact's energy is 1/2 kn o_s^2 with
+//       o_s = m + h(uneven),  h(u) = u - u (1 - r)^2 for r < 1, h(u) = u beyond,
+//     a function that is smooth across flat (h'(0) = 0: no kink) and equals the deepest overlap
+//     once the patch is uneven by kFlatPatchBand (2 %) of the layer (h(u) = u, h' = 1 at r = 1).
+//     Its gradient is kn o_s along the normal at the point
+//       c_A + h'(uneven) (deepest pair's midpoint - c_A),  h' = 1 - (1 - r)(1 - 3 r),
+//     since m changes with the motion as the patch's area centre does and `deepest` as the
+//     deepest pair does. So: a face lying flat is pushed at the centre of the faces' overlap
+//     with its overlap (m = deepest), whatever the meshing; a slight tilt moves the point
+//     towards the low side (a restoring torque: flat is a stable rest, with no chatter);
+//     an impacting, clearly tilted face gets the deepest pair; and every force and torque is
+//     the gradient of one energy (test FaceContactForceIsTheGradientOfItsEnergy). Within the
+//     band o_s is below the deepest overlap by at most 4/27 of the band (0.3 % of the layer).
+//     Members that are not nearly parallel (vertex-face, edge-edge, edge-face, faces at a clear
+//     angle) carry no area; absorbed rim contacts neither place nor orient the point. The
+//     switch at 10 degrees: a face tilted that far is uneven by far more than the band, so
+//     both sides of the switch give the deepest pair and its overlap -- except while its
+//     deepest overlap is below 2 kFlatPatchBand of the layer (the overlap is a thin strip along
+//     the low edge whose mean is half its deepest): there the force changes by at most
+//     kn x 4/27 of the band (0.3 % of the layer) and the point by less than the strip's width.
 //     The baselines (paper_min_width, none) keep the kernel's midpoints: they are the paper's.
-//  5b. Energy: the force is kn x the DEEPEST overlap, the gradient of 1/2 kn overlap^2 along
-//     the deepest pair, so only the deepest pair's midpoint makes the torque consistent with
-//     that energy. Applied at the centre of pressure of a face that is not flat against the
-//     other, it is not: a spinning rock whose face sweeps through an impact gained or lost
-//     16-18 % of its energy in one bounce (validation/contact/energy). So the point moves
-//     linearly from the centre of pressure (patch flat: deepest overlap = mean overlap over
-//     the polygons) to the deepest pair's midpoint as the unevenness (deepest - mean) / layer
-//     grows to kFlatPatchBand (2 %): a resting face keeps its meshing-independent centre, an
-//     impacting face conserves energy (one bounce: 0.01 %).
 //  6. The patch's extent, for the rocking damper of contact_force.h. The force of a contact
 //     acts at one point, so a rotation of the two bodies about that point (about an axis in
 //     the contact plane: one face rocking on the other) gives no normal velocity there and the
@@ -128,7 +137,7 @@
 namespace tri {
 
 // Step 5b: how uneven (deepest minus mean overlap over the contact polygons, as a fraction of
-// eps_a + eps_b) a face contact may be before its point leaves the centre of pressure.
+// eps_a + eps_b) a face contact may be before it is treated as the deepest pair alone.
 constexpr double kFlatPatchBand = 0.02;
 
 struct ContactPoint {

@@ -584,27 +584,26 @@ TEST(ContactReductionPoint, OverhangingCubeIsCentredOnTheOverlap) {
 }
 
 // Faces tilted by a small angle (below kParallelFaceAngle) press harder on their lower side.
-// Nearly flat (tilt 1e-5 rad: the overlap is uneven by 1e-4 of the layer, well inside
-// kFlatPatchBand) the point is the centre of pressure of an overlap that grows linearly towards
-// the low side, the same for every meshing. Clearly tilted (0.005 rad: uneven by 10 % of the
-// layer; 0.03 rad: the layers overlap on a strip along the low edge only) it is the deepest
-// pair's midpoint, on the low edge: the point consistent with the contact's energy (step 5b).
-TEST(ContactReductionPoint, SlightlyTiltedFaceGivesCentreOfPressureThenTheLowEdge) {
+// Nearly flat (tilt 1e-5 rad: the overlap is uneven by 1e-4 of the layer, r = 1e-4 /
+// kFlatPatchBand of the band) the point is the centre of the patch's area moved the fraction
+// h'(r) = 1 - (1 - r)(1 - 3r) of the way towards the low edge's middle, and the overlap is
+// mean + h(uneven), both the same for every meshing (step 5b). Clearly tilted (0.005 rad:
+// uneven by 10 % of the layer; 0.03 rad: the layers overlap on a strip along the low edge only)
+// it is the deepest pairs' midpoint, on the low edge, with the deepest overlap: the force of the
+// potential 1/2 kn overlap^2.
+TEST(ContactReductionPoint, SlightlyTiltedFaceSlidesFromTheAreaCentreToTheLowEdge) {
   const double gap = 0.2 * kLayer, h = 0.5 * kSide;
   const Vector3d xy(-0.3e-3, 0.45e-3, 0);
   for (const double tilt : {1e-5, 0.005, 0.03}) {
     const Matrix3d R = Eigen::AngleAxisd(tilt, Vector3d::UnitY()).toRotationMatrix(); // +x low
     // Along the face, s in [-h, h] from its centre, the gap is gap + sin(tilt) (h - s): the
-    // overlap o(s) = o_low - slope (h - s) on [max(-h, h - o_low / slope), h].
+    // overlap o(s) = o_low - slope (h - s).
     const double slope = std::sin(tilt), o_low = kLayer - gap;
-    const double lo = std::max(-h, h - o_low / slope);
-    auto moment = [&](double s, int power) { // antiderivative of o(s) s^power
-      const double c0 = o_low - slope * h;
-      return power == 0 ? c0 * s + 0.5 * slope * s * s : 0.5 * c0 * s * s + slope * s * s * s / 3;
-    };
-    const double s_c = (moment(h, 1) - moment(lo, 1)) / (moment(h, 0) - moment(lo, 0));
-    const double x_c = s_c * std::cos(tilt); // world x from the face's centre
     const bool flat = tilt < 1e-4;
+    // Flat case: the whole face overlaps, mean = o(0), area centre at s = 0.
+    const double uneven = slope * h, r = uneven / (tri::kFlatPatchBand * kLayer);
+    const double slide = 1.0 - (1.0 - r) * (1.0 - 3.0 * r);
+    const double expected_overlap = o_low - uneven * (1.0 - r) * (1.0 - r);
     std::vector<Vector3d> found;
     for (const int plane_k : {1, 16})
       for (const int k : {1, 2, 4, 8}) {
@@ -619,20 +618,75 @@ TEST(ContactReductionPoint, SlightlyTiltedFaceGivesCentreOfPressureThenTheLowEdg
         const Vector3d face_centre = centre + R * Vector3d(0, 0, -h);
         const double dx = points[0].point.x() - face_centre.x();
         std::printf("tilt %.5f tri/face %3d plane %2d: point - face centre (%.4e, %.4e), "
-                    "centre of pressure %.4e\n",
-                    tilt, 2 * k * k, plane_k, dx, points[0].point.y() - face_centre.y(), x_c);
+                    "overlap %.6e\n",
+                    tilt, 2 * k * k, plane_k, dx, points[0].point.y() - face_centre.y(),
+                    points[0].overlap);
         if (flat) {
-          // 1e-4 / kFlatPatchBand = 0.5 % of the way to the deepest pair (anywhere on the edge)
-          EXPECT_NEAR(dx, x_c, 1e-2 * kSide);
-          EXPECT_NEAR(points[0].point.y(), face_centre.y(), 1e-2 * kSide);
+          ASSERT_LT(r, 0.01);
+          EXPECT_NEAR(dx, slide * h * std::cos(tilt), 1e-6 * kSide);
+          // The low edge's middle is an average of tied closest points along it: within it.
+          EXPECT_LE(std::abs(points[0].point.y() - face_centre.y()), slide * h);
+          EXPECT_NEAR(points[0].overlap, expected_overlap, 1e-9 * kLayer);
         } else {
           EXPECT_NEAR(dx, h * std::cos(tilt), 1e-6 * kSide); // on the low edge
           EXPECT_LE(std::abs(points[0].point.y() - face_centre.y()), h * (1 + 1e-9));
+          EXPECT_NEAR(points[0].overlap, o_low, 1e-9 * kLayer);
         }
       }
-    if (flat)
+    if (flat) {
       for (const Vector3d &p : found)
         EXPECT_LE((p - found[0]).norm(), 1e-2 * kSide) << "tilt " << tilt;
+    }
+  }
+}
+
+// The point and the overlap of a face contact are those of a potential: over a small rotation
+// of a resting face about an in-plane axis, the work of the reduced contact's force and torque
+// (kn overlap n at point) equals the change of 1/2 kn overlap^2, through flat, within the band
+// and beyond it (step 5b). A centre-of-pressure point with the deepest overlap fails this by
+// the band's width.
+TEST(ContactReductionPoint, FaceContactForceIsTheGradientOfItsEnergy) {
+  const double gap = 0.3 * kLayer, h = 0.5 * kSide;
+  const Vector3d xy(0.1e-3, -0.2e-3, 0);
+  const Mesh b = plane(1.5 * kSide, 4);
+  const double band_tilt = tri::kFlatPatchBand * kLayer / h; // tilt where r = 1
+  for (const int k : {1, 4}) {
+    auto state = [&](double tilt, double lift, Vector3d &point, double &overlap,
+                     Vector3d &centre) {
+      const Matrix3d R = Eigen::AngleAxisd(tilt, Vector3d::UnitY()).toRotationMatrix();
+      Mesh a;
+      centre = place_cube(a, k, xy, gap + lift, R);
+      const auto raw = contacts_by(2, a, b);
+      const auto points = tri::reduce_contacts(raw, soa_of(a), kEps, soa_of(b), kEps,
+                                               params_for(kSide / k, 3 * kSide / 4));
+      ASSERT_EQ(points.size(), 1u);
+      point = points[0].point;
+      overlap = points[0].overlap;
+    };
+    // Path in (tilt, lift): from -2 band_tilt through flat to 0.3 band_tilt (inside the band)
+    // while lifting by 0.1 layer (place_cube keeps the low edge at gap + lift, so the centre
+    // moves too); midpoint rule.
+    const int steps = 400;
+    auto tilt_at = [&](int i) { return band_tilt * (-2.0 + 2.3 * i / steps); };
+    auto lift_at = [&](int i) { return 0.1 * kLayer * i / steps; };
+    double work = 0.0, overlap0 = 0.0, overlap1 = 0.0;
+    Vector3d p, c, c_begin, c_end, unused;
+    double o;
+    state(tilt_at(0), lift_at(0), unused, overlap0, c_begin);
+    for (int i = 0; i < steps; ++i) {
+      state(tilt_at(i + 1), lift_at(i + 1), unused, o, c_end);
+      state(0.5 * (tilt_at(i) + tilt_at(i + 1)), 0.5 * (lift_at(i) + lift_at(i + 1)), p, o, c);
+      // Force on the cube (a): kn o along +z (kn = 1; n from a to b is -z). Torque about its
+      // centre (p - c) x F; a rotation by d(tilt) is about +y through the centre.
+      const Vector3d f(0, 0, o);
+      work += f.dot(c_end - c_begin) + (p - c).cross(f).y() * (tilt_at(i + 1) - tilt_at(i));
+      c_begin = c_end;
+    }
+    overlap1 = o;
+    state(tilt_at(steps), lift_at(steps), unused, overlap1, c_end);
+    const double energy_change = 0.5 * (overlap1 * overlap1 - overlap0 * overlap0);
+    std::printf("k %d: work %.6e, -energy change %.6e\n", k, work, -energy_change);
+    EXPECT_NEAR(work, -energy_change, 1e-3 * std::abs(energy_change)) << "k " << k;
   }
 }
 
