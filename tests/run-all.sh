@@ -3,6 +3,7 @@
 # GoogleTest kernel and io tests, deck tests through liggghts-tri), then builds the whole
 # suite again with AddressSanitizer + UndefinedBehaviorSanitizer and runs it once more.
 # TRI_SKIP_SANITIZERS=1 skips the second part (it takes ~11 minutes on 2 cores).
+# Last, the libFuzzer targets (tests/fuzz, clang): TRI_SKIP_FUZZ=1 skips them (~5 minutes).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash examples/build.sh
@@ -19,4 +20,8 @@ if [ "${TRI_SKIP_SANITIZERS:-0}" != 1 ]; then
   # freed (traced: none in src_plugin), and LIGGGHTS's Error::all bug (suppressions file).
   ASAN_OPTIONS="detect_leaks=0:suppressions=$PWD/tests/sanitizer_suppressions_asan.txt" \
     ctest --test-dir build-asan --output-on-failure -j"$(nproc)" -L deck
+fi
+
+if [ "${TRI_SKIP_FUZZ:-0}" != 1 ]; then
+  bash tests/fuzz/run-fuzz.sh
 fi

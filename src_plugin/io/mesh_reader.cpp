@@ -21,6 +21,7 @@
 #include <array>
 #include <cctype>
 #include <cerrno>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -123,6 +124,20 @@ std::string file_bytes(const std::string &path) {
   return bytes.str();
 }
 
+// Text files must hold printable ASCII and line layout only: VTK's text parsers split lines
+// with C string functions (a NUL ends a line early) and words at spaces and tabs.
+void check_text(const std::string &path, const std::string &bytes, std::size_t begin,
+                std::size_t end, const std::string &what) {
+  for (std::size_t i = begin; i < end; ++i) {
+    const auto c = static_cast<unsigned char>(bytes[i]);
+    if ((c < 0x20 || c > 0x7e) && c != '\n' && c != '\r' && c != '\t') {
+      std::ostringstream os;
+      os << what << ": byte 0x" << std::hex << int(c) << std::dec << " at offset " << i;
+      fail(path, os.str());
+    }
+  }
+}
+
 bool starts_with_solid(const std::string &bytes) {
   std::size_t i = 0;
   while (i < bytes.size() && std::isspace(static_cast<unsigned char>(bytes[i])))
@@ -160,6 +175,12 @@ void check_stl_complete(const std::string &path, const std::string &bytes) {
           "\"solid\" (ASCII STL)";
     fail(path, os.str());
   }
+  // ASCII must be text throughout: vtkSTLReader decides the kind again from the bytes near
+  // the start, and a few control bytes there make it read a text file as binary, trusting
+  // a "triangle count" made of text (fuzzing found 2 GB allocated for an 872-byte file).
+  check_text(path, bytes, 0, bytes.size(),
+             "STL file is neither binary (its size is not 84 + 50 x its triangle count) nor "
+             "ASCII text");
   // ASCII: the last word must be "endsolid" or follow it (endsolid [name]).
   std::string tail = bytes.substr(bytes.size() > 1024 ? bytes.size() - 1024 : 0);
   std::transform(tail.begin(), tail.end(), tail.begin(),
@@ -226,6 +247,11 @@ void check_ply_complete(const std::string &path, const std::string &bytes) {
     bad("no \"end_header\" line");
   std::size_t body = bytes.find('\n', end_header);
   body = body == std::string::npos ? bytes.size() : body + 1;
+  // VTK only stops at a line that is exactly end_header; anything else keeps it reading the
+  // body as header, past the checks below.
+  if (end_header == 0 || bytes[end_header - 1] != '\n' ||
+      bytes.find_first_not_of(" \t\r\n", end_header + 10) < body)
+    bad("\"end_header\" is not a line of its own");
 
   std::istringstream header(bytes.substr(0, end_header));
   std::string line, format;
@@ -263,15 +289,40 @@ void check_ply_complete(const std::string &path, const std::string &bytes) {
   }
   if (format != "ascii" && format != "binary_little_endian" && format != "binary_big_endian")
     bad("unknown format \"" + format + "\"");
+  check_text(path, bytes, 0, format == "ascii" ? bytes.size() : body,
+             format == "ascii" ? "ASCII PLY file is not text" : "PLY header is not text");
 
-  std::uint64_t num_vertices = 0;
-  for (const PlyElement &e : elements)
-    if (e.name == "vertex")
-      num_vertices = e.count;
+  // vtkPLYReader looks these up without checking that they exist (a null dereference).
+  const auto find = [&](const std::string &name) -> const PlyElement * {
+    for (const PlyElement &e : elements)
+      if (e.name == name)
+        return &e;
+    return nullptr;
+  };
+  const PlyElement *vertex = find("vertex"), *face = find("face");
+  if (!vertex)
+    bad("no \"element vertex\" in the header");
+  for (const char *axis : {"x", "y", "z"}) {
+    const bool found =
+        std::any_of(vertex->properties.begin(), vertex->properties.end(),
+                    [&](const PlyProperty &p) { return !p.is_list && p.name == axis; });
+    if (!found)
+      bad(std::string("the vertex element has no property ") + axis);
+  }
+  if (!face)
+    bad("no \"element face\" in the header");
+  if (std::none_of(face->properties.begin(), face->properties.end(), [](const PlyProperty &p) {
+        return p.is_list && (p.name == "vertex_indices" || p.name == "vertex_index");
+      }))
+    bad("the face element has no vertex_indices list");
+  const std::uint64_t num_vertices = vertex->count;
 
   const bool ascii = format == "ascii";
   const bool big_endian = format == "binary_big_endian";
-  std::istringstream tokens(ascii ? bytes.substr(body) : std::string());
+  // ASCII: VTK reads each element instance from a line of its own, so the words are taken
+  // line by line too (a line too short is a truncated element, whatever follows).
+  std::istringstream ascii_lines(ascii ? bytes.substr(body) : std::string());
+  std::istringstream tokens;
   std::size_t pos = body;
   // One integer (list count or index) or one skipped value; false at the end of the data.
   auto next_integer = [&](const std::string &type, std::int64_t &value) {
@@ -297,7 +348,13 @@ void check_ply_complete(const std::string &path, const std::string &bytes) {
 
   for (const PlyElement &e : elements) {
     const bool faces = e.name == "face";
-    for (std::uint64_t i = 0; i < e.count; ++i)
+    for (std::uint64_t i = 0; i < e.count; ++i) {
+      if (ascii) {
+        std::string line;
+        std::getline(ascii_lines, line);
+        tokens.clear();
+        tokens.str(line);
+      }
       for (const PlyProperty &p : e.properties) {
         auto truncated = [&]() {
           std::ostringstream os;
@@ -316,6 +373,12 @@ void check_ply_complete(const std::string &path, const std::string &bytes) {
         if (n < 0)
           bad("negative list length");
         const bool indices = faces && (p.name == "vertex_indices" || p.name == "vertex_index");
+        // VTK frees an empty face's index list twice (a list of 0); fewer than 3 is no face.
+        if (indices && n < 3) {
+          std::ostringstream os;
+          os << "face " << i << " has " << n << " vertex indices (a face needs at least 3)";
+          bad(os.str());
+        }
         for (std::int64_t k = 0; k < n; ++k) {
           std::int64_t index = 0;
           if (indices ? !next_integer(p.value_type, index) : !skip_value(p.value_type))
@@ -328,6 +391,77 @@ void check_ply_complete(const std::string &path, const std::string &bytes) {
           }
         }
       }
+    }
+  }
+}
+
+// --- OBJ index check ----------------------------------------------------------------------
+// vtkOBJReader range-checks neither texture-coordinate nor normal indices of faces: "f 1//1"
+// in a file without "vn" lines reads through a null array. Vertex indices are checked after
+// VTK has read the file (check_point_ids); texture and normal indices must be checked before.
+void check_obj_indices(const std::string &path, const std::string &bytes) {
+  std::istringstream lines(bytes);
+  std::string line;
+  std::vector<std::vector<std::string>> faces; // the corner tokens of each face, as written
+  long long num_tcoords = 0, num_normals = 0;
+  while (std::getline(lines, line)) {
+    std::istringstream words(line);
+    std::string keyword, corner;
+    words >> keyword;
+    if (keyword == "vt") {
+      ++num_tcoords;
+    } else if (keyword == "vn") {
+      ++num_normals;
+    } else if (keyword == "f" || keyword == "l" || keyword == "p") {
+      faces.emplace_back();
+      while (words >> corner)
+        faces.back().push_back(corner);
+    }
+  }
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    auto malformed = [&](const std::string &corner, const std::string &why) {
+      std::ostringstream os;
+      os << "OBJ file is malformed: element " << i << " (a face, line or point), corner \""
+         << corner << "\": " << why;
+      fail(path, os.str());
+    };
+    int form = -1; // slashes of the first corner; VTK assumes every corner has the same form
+    for (const std::string &corner : faces[i]) {
+      // v, v/vt, v//vn or v/vt/vn: VTK takes a slash as the promise of the field after it.
+      const int slashes = static_cast<int>(std::count(corner.begin(), corner.end(), '/'));
+      if (slashes > 2)
+        malformed(corner, "more than two slashes");
+      const std::size_t slash1 = corner.find('/');
+      const std::size_t slash2 = slashes == 2 ? corner.find('/', slash1 + 1) : std::string::npos;
+      std::string fields[2];
+      if (slashes >= 1)
+        fields[0] =
+            corner.substr(slash1 + 1, slashes == 2 ? slash2 - slash1 - 1 : std::string::npos);
+      if (slashes == 2)
+        fields[1] = corner.substr(slash2 + 1);
+      const bool has[2] = {!fields[0].empty(), !fields[1].empty()};
+      if ((slashes == 1 && !has[0]) || (slashes == 2 && !has[1]))
+        malformed(corner, "an index is missing after a slash");
+      const int this_form = slashes + 3 * has[0];
+      if (form >= 0 && this_form != form)
+        malformed(corner, "its corners mix the forms v, v/vt, v//vn and v/vt/vn");
+      form = this_form;
+      const long long counts[2] = {num_tcoords, num_normals};
+      const char *names[2] = {"texture coordinate", "normal"};
+      for (int k = 0; k < 2; ++k) {
+        if (!has[k])
+          continue;
+        char *end = nullptr;
+        errno = 0;
+        const long long index = std::strtoll(fields[k].c_str(), &end, 10);
+        if (*end != '\0' || errno != 0 || index < 1 || index > counts[k]) {
+          std::ostringstream os;
+          os << "refers to " << names[k] << " \"" << fields[k] << "\", but there are " << counts[k]
+             << " (1-based)";
+          malformed(corner, os.str());
+        }
+      }
+    }
   }
 }
 
@@ -391,7 +525,7 @@ void check_point_ids(const std::string &path, vtkCellArray *cells, vtkIdType num
 
 // Triangles of `poly` as an indexed mesh with exactly equal points merged (first occurrence
 // order, so the result does not depend on a hash).
-TriangleMesh indexed_triangles(vtkPolyData *poly) {
+TriangleMesh indexed_triangles(const std::string &path, vtkPolyData *poly) {
   TriangleMesh mesh;
   std::map<std::array<double, 3>, int> index_of;
   std::vector<int> merged(static_cast<std::size_t>(poly->GetNumberOfPoints()), -1);
@@ -400,6 +534,15 @@ TriangleMesh indexed_triangles(vtkPolyData *poly) {
     if (m < 0) {
       std::array<double, 3> p;
       poly->GetPoint(id, p.data());
+      // VTK keeps floats: 1e39 in a text file becomes inf, "nan" stays NaN. Said here, with
+      // the file's name (and before NaN, which compares false with everything, reaches the
+      // map below and merges with whatever point it meets).
+      if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) {
+        std::ostringstream os;
+        os << "a triangle corner has a coordinate that is not a finite 32-bit float (" << p[0]
+           << ", " << p[1] << ", " << p[2] << ")";
+        fail(path, os.str());
+      }
       const auto [it, inserted] = index_of.emplace(p, mesh.num_vertices());
       if (inserted)
         mesh.vertices.emplace_back(p[0], p[1], p[2]);
@@ -430,6 +573,8 @@ TriangleMesh read_mesh_file(const std::string &path) {
     check_stl_complete(path, bytes);
   if (ext == ".ply")
     check_ply_complete(path, bytes);
+  if (ext == ".obj")
+    check_obj_indices(path, bytes);
 
   ScopedMessageCapture capture;
   vtkSmartPointer<vtkAbstractPolyDataReader> reader = reader_for(path, ext);
@@ -455,7 +600,7 @@ TriangleMesh read_mesh_file(const std::string &path) {
   triangulate->Update();
   throw_if_vtk_complained(path, ext, capture.messages());
 
-  TriangleMesh mesh = indexed_triangles(triangulate->GetOutput());
+  TriangleMesh mesh = indexed_triangles(path, triangulate->GetOutput());
   if (mesh.triangles.empty())
     fail(path, "mesh file contains no triangles");
   return mesh;

@@ -14,16 +14,19 @@
 // Precision: VTK's three readers keep points as 32-bit floats whatever the file holds, so
 // coordinates carry about 7 significant digits (relative error <= 6e-8).
 //
-// The result is not validated: closedness, orientation and degeneracy are make_shape's job
-// (shape.h), which names the offending triangle.
+// The result is not validated beyond finite coordinates: closedness, orientation and
+// degeneracy are make_shape's job (shape.h), which names the offending triangle.
 //
 // Errors throw MeshFileError whose message starts with "<path>: ", for: a missing, unreadable
 // or empty file; an unknown extension; a binary STL whose size disagrees with its triangle
-// count; an ASCII STL without its closing "endsolid"; a PLY file whose body is shorter than
-// its header announces or whose faces name missing vertices (checked before VTK reads it:
-// VTK 9.1's PLY reader aborts the process on a truncated file); an OBJ face naming a missing
-// vertex; anything VTK reports as an error or warning while reading (captured, never
-// printed); a file with no triangles.
+// count; an ASCII STL without its closing "endsolid" or with a byte that is not ASCII text
+// (VTK would take it for binary); a PLY file whose body is shorter than its header announces
+// or whose faces name missing vertices, or without vertex x, y, z or face vertex_indices
+// (checked before VTK reads it: VTK 9.1's PLY reader aborts the process on a truncated file
+// and dereferences a missing element); an OBJ face naming a missing vertex, texture
+// coordinate or normal (VTK 9.1 reads through a null array for the last two); anything VTK
+// reports as an error or warning while reading (captured, never printed); a file with no
+// triangles; a coordinate that is not finite as a 32-bit float (1e39, nan, inf).
 // Thread safety: calls are serialised internally (VTK's message window is process-global).
 #pragma once
 

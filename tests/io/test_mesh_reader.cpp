@@ -294,6 +294,74 @@ TEST_F(MeshReader, ObjFaceWithMissingVertex) {
                                 "but there are 3 vertices"));
 }
 
+// Inputs found by tests/fuzz that VTK 9.1's readers crash on, or misread, unless the reader
+// stops them first; each must end in a MeshFileError that says why.
+TEST_F(MeshReader, AsciiStlWithBytesThatAreNotText) {
+  // VTK took this for binary and believed a "triangle count" made of text (2 GB).
+  std::string text = "solid x\n  fac" + std::string(40, '\0') + "et normal 0 0 1\n";
+  for (int k = 0; k < 4; ++k)
+    text += "  facet normal 0 0 1\n    outer loop\n      vertex 0 0 0\n      vertex 1 0 0\n"
+            "      vertex 0 1 0\n    endloop\n  endfacet\n";
+  text += "endsolid x\n";
+  EXPECT_TRUE(TextFileFailsWith("nul.stl", text, "nor ASCII text: byte 0x0 at offset 13"));
+}
+
+TEST_F(MeshReader, CoordinateBeyondFloatRange) {
+  std::string text = "solid x\n";
+  const char *corners[4][3] = {{"0 0 0", "0 1 0", "1 0 0"},
+                               {"0 0 0", "1 0 0", "0 0 1e39"},
+                               {"0 0 0", "0 0 1e39", "0 1 0"},
+                               {"1 0 0", "0 1 0", "0 0 1e39"}};
+  for (const auto &facet : corners) {
+    text += "facet normal 0 0 0\nouter loop\n";
+    for (const char *corner : facet)
+      text += std::string("vertex ") + corner + "\n";
+    text += "endloop\nendfacet\n";
+  }
+  text += "endsolid x\n";
+  EXPECT_TRUE(TextFileFailsWith("huge.stl", text, "not a finite 32-bit float"));
+}
+
+TEST_F(MeshReader, ObjTextureAndNormalIndicesAreChecked) {
+  const std::string tet = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n";
+  EXPECT_TRUE(TextFileFailsWith("no_normals.obj", tet + "f 1//1 3//1 2//1\n",
+                                "refers to normal \"1\", but there are 0"));
+  EXPECT_TRUE(TextFileFailsWith("bad_tcoord.obj", tet + "vt 0 0\nf 1/1 3/2 2/1\n",
+                                "refers to texture coordinate \"2\", but there are 1"));
+  EXPECT_TRUE(
+      TextFileFailsWith("slash.obj", tet + "f 4/ 3 2\n", "an index is missing after a slash"));
+  EXPECT_TRUE(TextFileFailsWith("mixed.obj", tet + "vn 0 0 1\nf 1//1 3 2\n", "mix the forms"));
+  // Well-formed texture and normal indices still read (VTK wants one form in every face).
+  write_text(file("ok.obj"), tet + "vt 0 0\nvn 0 0 1\nf 1/1/1 3/1/1 2/1/1\nf 1/1/1 2/1/1 4/1/1\n"
+                                   "f 1/1/1 4/1/1 3/1/1\nf 2/1/1 3/1/1 4/1/1\n");
+  EXPECT_EQ(read_error(file("ok.obj")), "");
+}
+
+TEST_F(MeshReader, PlyStructureThatVtkCannotRead) {
+  const std::string vertex = "element vertex 3\nproperty float x\nproperty float y\n"
+                             "property float z\n";
+  const std::string face = "element face 1\nproperty list uchar int vertex_indices\n";
+  const std::string head = "ply\nformat ascii 1.0\n";
+  EXPECT_TRUE(TextFileFailsWith("no_vertex.ply", head + face + "end_header\n3 0 1 2\n",
+                                "no \"element vertex\""));
+  EXPECT_TRUE(TextFileFailsWith("no_face.ply", head + vertex + "end_header\n0 0 0\n1 0 0\n0 1 0\n",
+                                "no \"element face\""));
+  EXPECT_TRUE(TextFileFailsWith("empty_face.ply",
+                                head + vertex + face + "end_header\n0 0 0\n1 0 0\n0 1 0\n0\n",
+                                "face 0 has 0 vertex indices"));
+  EXPECT_TRUE(TextFileFailsWith("header_line.ply",
+                                head + vertex + face + "end_header0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+                                "\"end_header\" is not a line of its own"));
+  EXPECT_TRUE(TextFileFailsWith("nul.ply",
+                                head + vertex + face + "end_header\n0 0 0\n1 " +
+                                    std::string(1, '\0') + " 0\n0 1 0\n3 0 1 2\n",
+                                "ASCII PLY file is not text: byte 0x0"));
+  // One element per line: a short line is a truncated element even if the next fills it.
+  EXPECT_TRUE(TextFileFailsWith("split.ply",
+                                head + vertex + face + "end_header\n0 0\n0 1 0 0\n0 1 0\n3 0 1 2\n",
+                                "PLY file is truncated: vertex 0 of 3"));
+}
+
 TEST_F(MeshReader, TruncatedObj) {
   // Cut inside a face line: VTK's complaint becomes the exception. (Cut at a line end, an
   // OBJ simply has fewer faces; make_shape then reports the hole.)

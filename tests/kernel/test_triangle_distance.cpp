@@ -115,6 +115,19 @@ TEST(TriangleDistance, SymmetricInItsArguments) {
   }
 }
 
+TEST(TriangleDistance, NearlyParallelEdgesGiveTheExactDistance) {
+  // Unit edges crossing (seen along z) at angle theta, h apart: the distance is exactly h.
+  // The edge-edge solve once formed a e - b^2, which loses every digit at small angles
+  // (h + 2e-8 at theta 1e-7); found by tests/fuzz (fuzz_triangle_distance).
+  for (double theta : {1e-5, 1e-6, 1e-7, 3e-8, 1e-8, 1e-10})
+    for (double h : {1e-9, 1e-6}) {
+      const Eigen::Vector3d a[3] = {{0, 0, 0}, {1, 0, 0}, {0.5, -1, -0.5}};
+      const Eigen::Vector3d b[3] = {{0, -theta / 2, h}, {1, theta / 2, h}, {0.5, 1, h + 0.5}};
+      EXPECT_NEAR(triangle_distance(a, b).distance, h, 1e-15) << theta << " " << h;
+      EXPECT_NEAR(triangle_distance(b, a).distance, h, 1e-15) << theta << " " << h;
+    }
+}
+
 TEST(TriangleDistance, SeparatedNormalPointsFromAToB) {
   const Eigen::Vector3d a[3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
   const Eigen::Vector3d b[3] = {{0.2, 0.2, 0.5}, {0.4, 0.2, 1}, {0.2, 0.4, 1}};
