@@ -145,6 +145,10 @@ bool absorbed_by(const std::vector<Raw> &raw, const std::vector<int> &members,
 // normal: ties up to rounding (see the header, step 4).
 constexpr double kNormalDepthBand = 1e-6;
 
+// Members within this fraction of the layer of the deepest one share the deepest point, with
+// weights falling linearly to zero across it (header, step 5).
+constexpr double kDeepestTaper = 1e-3;
+
 // The two bodies' triangles (never null).
 struct Faces {
   const TriangleSoA *a, *b;
@@ -167,7 +171,7 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
   ContactPoint p;
   const Raw &s = raw[seed];
   Vector3d sum_n = Vector3d::Zero(), sum_tied = Vector3d::Zero();
-  double sum_wn = 0.0, sum_wa = 0.0;
+  double sum_wn = 0.0, sum_wa = 0.0, sum_wt = 0.0;
   // Area moments of the polygons (step 6), relative to the seed's midpoint (near the patch, so
   // no digits are lost far from the world origin): zeroth, first, second.
   double area0 = 0.0;
@@ -191,28 +195,33 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
       area1 += poly.area * d;
       area2 += poly.second_moment + poly.area * d * d.transpose();
     }
+    const double tied = 1.0 - (s.overlap - r.overlap) / (kDeepestTaper * layer);
+    if (tied > 0.0) {
+      sum_tied += tied * r.point;
+      sum_wt += tied;
+    }
     if (r.overlap >= s.overlap - kNormalDepthBand * layer) {
       sum_n += r.overlap * r.normal;
-      sum_tied += r.overlap * r.point;
       sum_wn += r.overlap;
     }
   }
-  // The deepest pair's midpoint, averaged over the pairs tied with it (an edge lying flat:
-  // every point of it is a closest point, and the torque should not pick one end).
-  const Vector3d deepest = sum_tied / sum_wn;
+  // The deepest pair's midpoint, averaged over the pairs (nearly) tied with it (step 5).
+  const Vector3d deepest = sum_tied / sum_wt;
   p.point = deepest;
   p.overlap = s.overlap;
   if (area0 > 0.0) {
-    // Step 5b: a face contact's force derives from the potential 1/2 kn overlap_s^2, with
-    // overlap_s = mean + h(deepest - mean) smooth across flat (see the header).
+    // Step 5b: a face contact's force is the gradient of 1/2 kn o_s^2, o_s = deepest - u (1 - r)^2,
+    // smooth across flat (see the header for the derivation of the point and the factor).
     const double mean = sum_wa / area0;
     const double uneven = std::max(0.0, s.overlap - mean);
-    const double r = uneven / (kFlatPatchBand * layer);
+    const double r = uneven / (kFlatPatchBand * s.overlap);
     if (r < 1.0) {
       const Vector3d area_centre = s.point + area1 / area0;
-      const double slide = 1.0 - (1.0 - r) * (1.0 - 3.0 * r); // h'(uneven)
-      p.point = area_centre + slide * (deepest - area_centre);
-      p.overlap = s.overlap - uneven * (1.0 - r) * (1.0 - r);
+      const double to_mean = (1.0 - r) * (1.0 - 3.0 * r);
+      const double band_term = 2.0 * kFlatPatchBand * r * r * (1.0 - r);
+      const double o_s = s.overlap - uneven * (1.0 - r) * (1.0 - r);
+      p.point = ((1.0 - to_mean - band_term) * deepest + to_mean * area_centre) / (1.0 - band_term);
+      p.overlap = o_s * (1.0 - band_term);
     }
   }
   p.tri_a = s.tri_a;

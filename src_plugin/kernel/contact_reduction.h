@@ -37,7 +37,7 @@
 //     degrees or more never does.
 //  4. One ContactPoint per class: overlap = the largest member overlap (so a flat patch at
 //     uniform gap gives exactly eps_a + eps_b - gap, whatever the mesh; within the flat band
-//     of step 5b, o_s); point: see steps 5 and 5b;
+//     of step 5b, o_s (1 - c)); point: see steps 5 and 5b;
 //     normal = the deepest member's normal, averaged (overlap-weighted) over the members tied
 //     with it to 1e-6 (eps_a + eps_b) (a flat face). The deepest pair is the pair of closest
 //     points of the two surfaces, whose direction is the contact normal of two convex bodies;
@@ -48,13 +48,19 @@
 //  5. The point: the gradient of the contact's energy. The force is kn x the deepest overlap,
 //     the gradient of 1/2 kn overlap^2 when it acts through the deepest pair of closest points
 //     (the overlap changes with the bodies' motion exactly as that pair's distance does), so
-//     the point is the deepest pair's midpoint, averaged over the members tied with it to
-//     1e-6 of the layer (an edge lying flat on a face: every point of it is a closest point,
-//     and the torque should not pick one end). Any other point -- an overlap-weighted centroid
-//     of the members, a centre of pressure -- gives a torque that is not the gradient of the
+//     the point is the deepest pair's midpoint, averaged over the members within
+//     kDeepestTaper = 1e-3 of the layer of it, with weights falling linearly from 1 (tied) to
+//     0 across that band. An edge lying flat on a face: every point of it is a closest point,
+//     and the torque should not pick one end; with a hard tie (1e-6) the point jumped from the
+//     edge's middle to one end at the slightest roll, a bang-bang torque that made a cube
+//     resting on an incline chatter in roll at the time-step scale and walk (6 um/s); the taper
+//     turns the jump into a stiff, smooth ramp (no chatter: validation/contact/friction), and
+//     departs from the gradient only while two closest points differ in depth by less than
+//     1e-3 of the layer. Any other point -- an overlap-weighted centroid of the members, a
+//     centre of pressure -- gives a torque that is not the gradient of the
 //     energy and a tumbling rock gains or loses energy at every impact (measured,
 //     validation/contact/energy: a box of 32 rocks drifted 2.5 % in 1e5 steps with the
-//     weighted centroid, 16-18 % in one bounce with a centre of pressure; 0.09 % with this rule).
+//     weighted centroid, 16-18 % in one bounce with a centre of pressure; 0.008 % with this rule).
 //  5b. Faces lying flat on each other. There the deepest pair is arbitrary (any point of the
 //     faces' overlap is a closest point; the kernel returns one, often a vertex): a resting
 //     cube would be pushed at a corner, tip, and rest on a point that depends on the meshing;
@@ -65,27 +71,33 @@
 //     area, area centroid and weight = integral of the local overlap over it. The triangles of
 //     a face partition it, so the polygons of all pairs of two faces tile the faces' overlap
 //     region for ANY meshing: the patch's area A, its area centre c_A and its mean overlap
-//     m = sum(weight) / A are the faces', to rounding. With uneven = deepest - m and
-//     r = uneven / (kFlatPatchBand x layer), the contact's energy is 1/2 kn o_s^2 with
-//       o_s = m + h(uneven),  h(u) = u - u (1 - r)^2 for r < 1, h(u) = u beyond,
-//     a function that is smooth across flat (h'(0) = 0: no kink) and equals the deepest overlap
-//     once the patch is uneven by kFlatPatchBand (2 %) of the layer (h(u) = u, h' = 1 at r = 1).
-//     Its gradient is kn o_s along the normal at the point
-//       c_A + h'(uneven) (deepest pair's midpoint - c_A),  h' = 1 - (1 - r)(1 - 3 r),
-//     since m changes with the motion as the patch's area centre does and `deepest` as the
-//     deepest pair does. So: a face lying flat is pushed at the centre of the faces' overlap
-//     with its overlap (m = deepest), whatever the meshing; a slight tilt moves the point
-//     towards the low side (a restoring torque: flat is a stable rest, with no chatter);
-//     an impacting, clearly tilted face gets the deepest pair; and every force and torque is
-//     the gradient of one energy (test FaceContactForceIsTheGradientOfItsEnergy). Within the
-//     band o_s is below the deepest overlap by at most 4/27 of the band (0.3 % of the layer).
+//     m = sum(weight) / A are the faces', to rounding. With D = the deepest overlap,
+//     u = D - m (how uneven the overlap is) and r = u / (kFlatPatchBand D), the contact's
+//     energy is 1/2 kn o_s^2 with
+//       o_s = D - u (1 - r)^2  for r < 1,  o_s = D beyond:
+//     smooth across flat (o_s - m = u (2 r - r^2) is quadratic in the tilt there: no kink), equal
+//     to D once the patch is uneven by kFlatPatchBand (10 %) of D, C1 at r = 1. Relative to D,
+//     so that the band belongs to faces lying flat: the overlap of a vertex or an edge meeting a
+//     nearly parallel face is a cone or a wedge (m = D/3 or D/2, r >= 5) at every depth, and
+//     keeps its deepest pair (relative to the layer instead, their onset and end, D below the
+//     band, were softened: restitution of icospheres fell by 3 %). Differentiating (dr = (du -
+//     r kFlatPatchBand dD) / (kFlatPatchBand D)) gives
+//       d o_s = (1 - t - c) dD + t dm,  t = (1 - r)(1 - 3 r),  c = 2 kFlatPatchBand r^2 (1 - r),
+//     and since m changes with the motion as the patch's area centre c_A does and D as the
+//     deepest pair does, the force is kn o_s (1 - c) along the normal at the point
+//       ((1 - t - c) deepest pair's midpoint + t c_A) / (1 - c)
+//     (c <= 0.3 kFlatPatchBand: a 3 % correction at most). So: a face lying flat is pushed at
+//     the centre of the faces' overlap with its overlap (r = 0: m = D), whatever the meshing; a
+//     slight tilt moves the point towards the low side (a restoring torque: flat is a stable
+//     rest, with no chatter); an impacting, clearly tilted face gets the deepest pair; and every
+//     force and torque is the gradient of one energy (test FaceContactForceIsTheGradientOfItsEnergy;
+//     measured: a resting cube on a 25 deg incline, mu = 0.5, rocked at 0.8 rad/s and crept
+//     28 um with a linear, non-gradient blend; it now sticks, validation/contact/friction).
 //     Members that are not nearly parallel (vertex-face, edge-edge, edge-face, faces at a clear
 //     angle) carry no area; absorbed rim contacts neither place nor orient the point. The
-//     switch at 10 degrees: a face tilted that far is uneven by far more than the band, so
-//     both sides of the switch give the deepest pair and its overlap -- except while its
-//     deepest overlap is below 2 kFlatPatchBand of the layer (the overlap is a thin strip along
-//     the low edge whose mean is half its deepest): there the force changes by at most
-//     kn x 4/27 of the band (0.3 % of the layer) and the point by less than the strip's width.
+//     switch at 10 degrees: a face tilted that far is uneven by at least sin(10 deg) / 2 of its
+//     width over the overlap (or the overlap is a wedge, r >= 5), so both sides of the switch
+//     give the deepest pair and its overlap unless the face is narrower than about 1.2 layers.
 //     The baselines (paper_min_width, none) keep the kernel's midpoints: they are the paper's.
 //  6. The patch's extent, for the rocking damper of contact_force.h. The force of a contact
 //     acts at one point, so a rotation of the two bodies about that point (about an axis in
@@ -137,8 +149,8 @@
 namespace tri {
 
 // Step 5b: how uneven (deepest minus mean overlap over the contact polygons, as a fraction of
-// eps_a + eps_b) a face contact may be before it is treated as the deepest pair alone.
-constexpr double kFlatPatchBand = 0.02;
+// the deepest overlap) a face contact may be before it is treated as the deepest pair alone.
+constexpr double kFlatPatchBand = 0.1;
 
 struct ContactPoint {
   Eigen::Vector3d point = Eigen::Vector3d::Zero();   // m, world frame
