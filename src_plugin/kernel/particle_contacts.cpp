@@ -39,11 +39,11 @@ struct Workspace {
 int collect_candidates(const TriangleSoA &a, const TriangleSoA &b, double margin, bool cull,
                        Workspace &ws) {
   const int na = a.num_triangles(), nb = b.num_triangles();
-  const std::size_t all = static_cast<std::size_t>(na) * static_cast<std::size_t>(nb);
-  if (ws.pairs.size() < all)
-    ws.pairs.resize(all);
-  TrianglePairIndex *pairs = ws.pairs.data();
-  if (!cull) {
+  const long long all = static_cast<long long>(na) * nb;
+  if (!cull && all <= kMaxUnculledPairs) {
+    if (ws.pairs.size() < static_cast<std::size_t>(all))
+      ws.pairs.resize(static_cast<std::size_t>(all));
+    TrianglePairIndex *pairs = ws.pairs.data();
     int k = 0;
     for (int i = 0; i < na; ++i)
       for (int j = 0; j < nb; ++j)
@@ -52,7 +52,7 @@ int collect_candidates(const TriangleSoA &a, const TriangleSoA &b, double margin
   }
   compute_triangle_boxes(a, ws.boxes_a);
   compute_triangle_boxes(b, ws.boxes_b);
-  return cull_triangle_pairs(ws.boxes_a, ws.boxes_b, margin, ws.cull, pairs);
+  return cull_triangle_pairs(ws.boxes_a, ws.boxes_b, margin, ws.cull, ws.pairs);
 }
 
 // Runs the chosen kernel on pairs [first, last) of the list; `first` is a batch boundary.

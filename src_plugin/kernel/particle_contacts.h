@@ -40,10 +40,15 @@ enum class ContactParallelism {
   Batches,       // OpenMP loop over batches of batch_size pairs (the paper's Algorithm 1)
 };
 
+constexpr long long kMaxUnculledPairs = 1LL << 22;
+
 struct ContactOptions {
   DistanceKernel kernel = DistanceKernel::Hybrid;
   ContactParallelism parallel = ContactParallelism::None;
   int batch_size = 8; // pairs per batch: BatchedHybrid's fallback unit, Batches' work unit
+  // false: every pair goes to the kernel (a diagnostic). Above kMaxUnculledPairs pairs the
+  // cull runs anyway: it drops only pairs that cannot be in contact, so the contacts are the
+  // same, and without it two 1e5-triangle shapes would need 1e10 pairs (terabytes).
   bool cull = true;
   int newton_iterations = 4;     // penalty steps; one of penalty_iterations_supported()
   double tolerance_ratio = 1e-4; // hybrid distance tolerance / min(eps_a, eps_b)

@@ -103,7 +103,7 @@ int boxes_near_box_as_b(const double lo[3], const double hi[3], const TriangleBo
 }
 
 int cull_triangle_pairs(const TriangleBoxes &a, const TriangleBoxes &b, double margin,
-                        CullScratch &s, TrianglePairIndex *pairs) {
+                        CullScratch &s, std::vector<TrianglePairIndex> &pairs) {
   const int na = a.num_triangles(), nb = b.num_triangles();
   s.index_a.resize(static_cast<std::size_t>(na));
   s.index_b.resize(static_cast<std::size_t>(nb));
@@ -137,6 +137,10 @@ int cull_triangle_pairs(const TriangleBoxes &a, const TriangleBoxes &b, double m
   std::int32_t *keep = s.keep.data();
   int count = 0;
   for (int r = 0; r < sa; ++r) {
+    // A row writes (branch-free) up to sb entries past `count`.
+    if (pairs.size() < static_cast<std::size_t>(count) + sb)
+      pairs.resize(std::max(2 * pairs.size(), static_cast<std::size_t>(count) + sb));
+    TrianglePairIndex *row = pairs.data() + count;
     const int i = s.index_a[r];
     const double lx = a.lo_x[i] - margin, ly = a.lo_y[i] - margin, lz = a.lo_z[i] - margin;
     const double hx = a.hi_x[i] + margin, hy = a.hi_y[i] + margin, hz = a.hi_z[i] + margin;
@@ -144,10 +148,12 @@ int cull_triangle_pairs(const TriangleBoxes &a, const TriangleBoxes &b, double m
     for (int k = 0; k < sb; ++k)
       keep[k] = (clx[k] <= hx) & (chx[k] >= lx) & (cly[k] <= hy) & (chy[k] >= ly) &
                 (clz[k] <= hz) & (chz[k] >= lz);
+    int kept = 0;
     for (int k = 0; k < sb; ++k) {
-      pairs[count] = {i, ib[k]};
-      count += keep[k];
+      row[kept] = {i, ib[k]};
+      kept += keep[k];
     }
+    count += kept;
   }
   return count;
 }

@@ -22,6 +22,7 @@
 #include "triangle_soa.h"
 
 #include <cstdint>
+#include <vector>
 
 namespace tri {
 
@@ -66,9 +67,11 @@ struct CullScratch {
 
 // Two-stage cull of all pairs (i of a, j of b): writes to `pairs` every pair whose boxes
 // overlap with margin `margin`, exactly the pairs overlapping_boxes keeps, in row-major
-// order (i, then j ascending). `pairs` must hold a.num_triangles() * b.num_triangles()
-// entries. Returns the number of pairs written.
+// order (i, then j ascending). Returns the number of pairs written: the first entries of
+// `pairs`, which grows as needed (never shrinks, so a reused vector stops allocating). Its
+// size follows the pairs kept, not na * nb: two touching 1e5-triangle shapes keep about 1e5
+// pairs of 1e10.
 int cull_triangle_pairs(const TriangleBoxes &a, const TriangleBoxes &b, double margin,
-                        CullScratch &scratch, TrianglePairIndex *pairs);
+                        CullScratch &scratch, std::vector<TrianglePairIndex> &pairs);
 
 } // namespace tri

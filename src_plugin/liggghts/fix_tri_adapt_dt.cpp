@@ -1,5 +1,6 @@
 #include "fix_tri_adapt_dt.h"
 
+#include "approach_speed.h"
 #include "fix_tri_particles.h"
 #include "step_tally.h"
 
@@ -7,13 +8,18 @@
 #include "error.h"
 #include "force.h"
 #include "modify.h"
+#include "neighbor.h"
 #include "pair.h"
 #include "update.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <string>
+
+#include <mpi.h>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -41,6 +47,8 @@ FixTriAdaptDt::FixTriAdaptDt(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg,
       have_min = true;
     } else if (key == "fraction") {
       fraction_ = v;
+    } else if (key == "approach") {
+      approach_ = v;
     } else if (key == "growth") {
       if (v <= 1.0)
         error->all(FLERR, "Fix tri/adapt_dt: 'growth' must be > 1");
@@ -56,7 +64,7 @@ FixTriAdaptDt::FixTriAdaptDt(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg,
     error->all(FLERR, "Fix tri/adapt_dt: dtmin must not exceed dtmax");
   nevery = 1;
   vector_flag = 1;
-  size_vector = 3;
+  size_vector = 4;
   global_freq = 1;
   extvector = 0;
 }
@@ -94,21 +102,86 @@ void FixTriAdaptDt::set_dt(double dt, const char *why) {
     modify->fix[i]->reset_dt();
 }
 
+double FixTriAdaptDt::approach_limit(double dt, std::string &why) const {
+  const tri_liggghts::PairApproach pairs =
+      tri_liggghts::pair_dt_limit(lmp, approach_ * particles_->epsilon());
+  const tri_liggghts::FastestParticle fastest = tri_liggghts::fastest_particle(lmp);
+  const double skin_limit = fastest.speed > 0.0 ? 0.5 * neighbor->skin / fastest.speed
+                                                : std::numeric_limits<double>::infinity();
+  double local[2] = {pairs.dt_limit, skin_limit}, global[2];
+  MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_MIN, world);
+  // The reason names the pair (or particle) on the rank that holds it; only rank 0 prints,
+  // so the figures travel with a second reduction only when the bound applies.
+  const bool by_pair = global[0] <= global[1];
+  const double limit = std::min(global[0], global[1]);
+  if (!(limit < dt))
+    return limit;
+  struct {
+    double value;
+    int rank;
+  } mine{by_pair ? pairs.dt_limit : skin_limit, comm->me}, owner;
+  MPI_Allreduce(&mine, &owner, 1, MPI_DOUBLE_INT, MPI_MINLOC, world);
+  double info[3] = {by_pair ? pairs.speed : fastest.speed,
+                    double(by_pair ? pairs.tag_i : fastest.tag), double(pairs.tag_j)};
+  MPI_Bcast(info, 3, MPI_DOUBLE, owner.rank, world);
+  char text[200];
+  if (by_pair)
+    std::snprintf(text, sizeof text,
+                  "approach: particles %.0f and %.0f close in at %.4g m/s, approach * epsilon",
+                  info[1], info[2], info[0]);
+  else
+    std::snprintf(text, sizeof text,
+                  "approach: particle %.0f moves at %.4g m/s, half the neighbour skin", info[1],
+                  info[0]);
+  why = text;
+  return limit;
+}
+
+// Before the first step, so that particles launched at each other start with a bounded dt.
+void FixTriAdaptDt::setup(int) {
+  std::string why;
+  const double limit = approach_limit(update->dt, why);
+  if (limit < update->dt && update->dt > dtmin_) {
+    ++limits_;
+    set_dt(std::max(limit, dtmin_), why.c_str());
+  }
+}
+
 void FixTriAdaptDt::end_of_step() {
   const tri::InteractionTally t = tri_liggghts::global_tally(lmp).all;
+  double dt = update->dt;
+  enum { keep, halve, grow } rule = keep;
   if (t.contacts_after > 0 && t.min_distance < fraction_ * particles_->epsilon()) {
-    if (update->dt > dtmin_) {
-      ++halvings_;
-      set_dt(std::max(0.5 * update->dt, dtmin_), "a contact closer than fraction * epsilon");
+    if (dt > dtmin_) {
+      rule = halve;
+      dt = std::max(0.5 * dt, dtmin_);
     }
-  } else if (t.contacts_after == 0 && update->dt < dtmax_) {
+  } else if (t.contacts_after == 0 && dt < dtmax_) {
+    rule = grow;
+    dt = std::min(growth_ * dt, dtmax_);
+  }
+  std::string approach_why;
+  const double limit = approach_limit(dt, approach_why);
+  // A bound within 1e-6 of the current dt (a pair flying in at constant speed) is no change.
+  if (limit < dt && dt > dtmin_) {
+    const double bounded = std::max(limit, dtmin_);
+    if (std::fabs(bounded - update->dt) > 1e-6 * update->dt) {
+      ++limits_;
+      set_dt(bounded, approach_why.c_str());
+    }
+  } else if (rule == halve) {
+    ++halvings_;
+    set_dt(dt, "a contact closer than fraction * epsilon");
+  } else if (rule == grow) {
     ++growths_;
-    set_dt(std::min(growth_ * update->dt, dtmax_), "no contact");
+    set_dt(dt, "no contact");
   }
 }
 
 double FixTriAdaptDt::compute_vector(int k) {
   if (k == 0)
     return update->dt;
+  if (k == 3)
+    return double(limits_);
   return k == 1 ? double(halvings_) : double(growths_);
 }

@@ -1,8 +1,13 @@
 #include "fix_tri_particles.h"
 
+#include "approach_speed.h"
+#include "fix_tri_wall.h"
+#include "pair_tri_gran.h"
 #include "particle_options.h"
+#include "step_tally.h"
 
 #include "mesh_reader.h"
+#include "particle_contacts.h"
 #include "random_rock.h"
 #include "rigid_body.h"
 #include "seeded_random.h"
@@ -14,14 +19,21 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "force.h"
 #include "group.h"
 #include "memory.h"
 #include "modify.h"
+#include "neigh_list.h"
+#include "pair.h"
+#include "update.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <stdexcept>
+
+#include <mpi.h>
 #include <string>
 
 using namespace LAMMPS_NS;
@@ -106,6 +118,30 @@ FixTriParticles::FixTriParticles(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, n
     }
   }
 
+  // Triangles finer than the soft layer: a point of one surface is within the layers of
+  // ~30 (eps / edge)^2 triangles of the other, so the triangle pairs of one contact, and the
+  // work to reduce them, grow with (eps / edge)^4 (measured: two 4 mm cubes face to face,
+  // 0.45 s per step at edge = 2 epsilon, 16 s at edge = epsilon).
+  for (const tri::Shape &s : shapes_) {
+    const tri::TriangleSoA &t = s.soa;
+    double sum = 0.0;
+    for (int k = 0; k < t.num_triangles(); ++k)
+      for (int e = 0; e < 3; ++e)
+        sum += (t.vertex(k, e) - t.vertex(k, (e + 1) % 3)).norm();
+    const double mean_edge = sum / (3.0 * t.num_triangles());
+    if (mean_edge < epsilon_) {
+      const double fits = t.num_triangles() * (mean_edge / epsilon_) * (mean_edge / epsilon_);
+      char msg[500];
+      std::snprintf(msg, sizeof msg,
+                    "Fix tri/particles: shape %s (%d triangles) has a mean edge length of %g m, "
+                    "shorter than epsilon (%g m): one contact would hold thousands of "
+                    "triangle pairs and cost seconds per step; use a coarser mesh (about %.0f "
+                    "triangles or fewer) or a smaller epsilon",
+                    s.name.c_str(), t.num_triangles(), mean_edge, epsilon_, std::floor(fits));
+      error->all(FLERR, msg);
+    }
+  }
+
   peratom_flag = 1;
   size_peratom_cols = kValues;
   peratom_freq = 1;
@@ -134,7 +170,138 @@ FixTriParticles::~FixTriParticles() {
   memory->destroy(pending_);
 }
 
-int FixTriParticles::setmask() { return PRE_FORCE; }
+int FixTriParticles::setmask() { return PRE_FORCE | POST_FORCE | END_OF_STEP; }
+
+// After the pair forces, before the second half-kick: v is still the velocity that carried
+// the particles into this step's positions. A pair within reach that this step brought more
+// than epsilon closer, while there are contacts on this rank (it is in contact, or about to
+// be), cannot be resolved by the soft layer. Local: with newton off every pair is seen whole
+// on each rank that owns one of its particles. Reported in end_of_step.
+void FixTriParticles::post_force(int) {
+  unresolved_ = Unresolved{};
+  auto *pair = dynamic_cast<PairTriGran *>(force->pair);
+  if (!pair || pair->tally().contacts_after == 0)
+    return;
+  const tri_liggghts::FastestPair p = tri_liggghts::fastest_pair_within_reach(lmp);
+  unresolved_.step = p.normal_speed * update->dt;
+  unresolved_.speed = p.normal_speed;
+  unresolved_.tag_i = p.tag_i;
+  unresolved_.tag_j = p.tag_j;
+}
+
+// After every fix tri/wall has added its forces.
+void FixTriParticles::end_of_step() {
+  // Not after read_restart: intersections then come from the dynamics, not from set-up.
+  if (!overlaps_checked_ && update->ntimestep == update->firststep + 1) {
+    overlaps_checked_ = true;
+    check_initial_overlaps();
+  }
+  find_unresolved_wall_contact();
+  report_unresolved_contacts();
+}
+
+// Particles created inside each other or a wall. A shallow intersection is pushed apart, but
+// past about the soft-layer width the triangle contacts of a deep one point every way and
+// their forces can cancel, leaving the particles stuck inside each other, so the first step
+// of the first run stops instead. Names one pair (found again with the distance kernel, which
+// costs nothing as this path runs once).
+void FixTriParticles::check_initial_overlaps() {
+  const tri_liggghts::GlobalTally pair = global_tally(lmp, tri_liggghts::TallySource::pair);
+  const tri_liggghts::GlobalTally wall = global_tally(lmp, tri_liggghts::TallySource::wall);
+  if (pair.all.penetrations + wall.all.penetrations == 0)
+    return;
+  double tags[2] = {0.0, 0.0};
+  if (pair.all.penetrations > 0 && force->pair && force->pair->list) {
+    const NeighList *list = force->pair->list;
+    std::vector<tri::TriangleContact> contacts;
+    for (int ii = 0; ii < list->inum && tags[0] == 0.0; ++ii) {
+      const int i = list->ilist[ii];
+      for (int jj = 0; jj < list->numneigh[i] && tags[0] == 0.0; ++jj) {
+        const int j = list->firstneigh[i][jj] & NEIGHMASK;
+        contacts.clear();
+        tri::ContactStats stats;
+        tri::find_triangle_contacts(world_[i], epsilon_, world_[j], epsilon_,
+                                    tri::ContactOptions{}, contacts, stats);
+        for (const tri::TriangleContact &c : contacts)
+          if (c.intersecting) {
+            tags[0] = std::min(atom->tag[i], atom->tag[j]);
+            tags[1] = std::max(atom->tag[i], atom->tag[j]);
+            break;
+          }
+      }
+    }
+  }
+  double found[2];
+  MPI_Allreduce(tags, found, 2, MPI_DOUBLE, MPI_MAX, world);
+  char example[80] = "";
+  if (found[0] > 0.0)
+    std::snprintf(example, sizeof example, ", e.g. particles %.0f and %.0f", found[0], found[1]);
+  char msg[600];
+  std::snprintf(msg, sizeof msg,
+                "Fix tri/particles: the run starts with intersecting surfaces (%lld particle "
+                "pair(s)%s; %lld particle-wall contact(s)): particles created inside each other "
+                "or inside a wall cannot be pushed apart reliably (the contact force acts in "
+                "the soft layers); create them at least 2 x epsilon apart",
+                pair.all.penetrations, example, wall.all.penetrations);
+  error->all(FLERR, msg);
+}
+
+// Walls: a wall's direction is not known here, so only once real surfaces intersect, and only
+// a particle that moves against its force (approaching; one pushed out of a wall moves with
+// it). Kept only if it moves farther per step than the pair found in post_force.
+void FixTriParticles::find_unresolved_wall_contact() {
+  long long hits = 0;
+  for (int k = 0; k < modify->nfix; ++k)
+    if (std::strcmp(modify->fix[k]->style, "tri/wall") == 0)
+      hits += static_cast<FixTriWall *>(modify->fix[k])->tally().penetrations;
+  if (hits == 0)
+    return;
+  double **v = atom->v, **f = atom->f;
+  for (int i = 0; i < atom->nlocal; ++i) {
+    const double speed = std::sqrt(v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2]);
+    const double along_force = v[i][0] * f[i][0] + v[i][1] * f[i][1] + v[i][2] * f[i][2];
+    if (along_force < 0.0 && speed * update->dt > unresolved_.step) {
+      unresolved_.step = speed * update->dt;
+      unresolved_.speed = speed;
+      unresolved_.tag_i = atom->tag[i];
+      unresolved_.tag_j = 0;
+    }
+  }
+}
+
+// error->one would abort without flushing the screen (the message is lost in a pipe), so the
+// ranks agree first and stop together with error->all.
+void FixTriParticles::report_unresolved_contacts() {
+  struct {
+    double step;
+    int rank;
+  } mine{unresolved_.step, comm->me}, worst;
+  MPI_Allreduce(&mine, &worst, 1, MPI_DOUBLE_INT, MPI_MAXLOC, world);
+  if (!(worst.step > epsilon_))
+    return;
+  double info[3] = {unresolved_.speed, double(unresolved_.tag_i), double(unresolved_.tag_j)};
+  MPI_Bcast(info, 3, MPI_DOUBLE, worst.rank, world);
+  const double dt = update->dt;
+  const char *advice = modify->find_fix_style("tri/adapt_dt", 0)
+                           ? "lower dtmin of fix tri/adapt_dt"
+                           : "use a smaller timestep or fix tri/adapt_dt";
+  char msg[600];
+  if (info[2] > 0.0)
+    std::snprintf(msg, sizeof msg,
+                  "Fix tri/particles: step " BIGINT_FORMAT ": particles %.0f and %.0f meet at "
+                  "%g m/s, %g m per time step of %g s, more than epsilon (%g m): the soft layer "
+                  "cannot resolve such a contact and particles may pass through each other; %s",
+                  update->ntimestep, info[1], info[2], info[0], info[0] * dt, dt, epsilon_,
+                  advice);
+  else
+    std::snprintf(msg, sizeof msg,
+                  "Fix tri/particles: step " BIGINT_FORMAT ": particle %.0f moves at %g m/s "
+                  "against its contact force, %g m per time step of %g s, more than epsilon "
+                  "(%g m), and a particle-wall contact has intersecting surfaces: the soft layer "
+                  "cannot resolve such a contact and particles may pass through walls; %s",
+                  update->ntimestep, info[1], info[0], info[0] * dt, dt, epsilon_, advice);
+  error->all(FLERR, msg);
+}
 
 void FixTriParticles::initialise_atom(int i) {
   const auto tag = static_cast<std::uint64_t>(atom->tag[i]);
@@ -372,6 +539,7 @@ void FixTriParticles::write_restart(FILE *fp) {
 }
 
 void FixTriParticles::restart(char *buf) {
+  overlaps_checked_ = true;
   const double *data = reinterpret_cast<const double *>(buf);
   const double f = shape_fingerprint();
   if (std::fabs(data[0] - f) > 1e-9 * std::fabs(f))

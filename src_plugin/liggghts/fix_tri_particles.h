@@ -6,6 +6,13 @@
 // soft layers can touch) and rmass := density * volume. Each step (pre_force) it rebuilds
 // the world-frame triangles of owned and ghost atoms for the contact styles and the output.
 //
+// Checks (post_force, end_of_step): on the first step of the first run (not after
+// read_restart), an error if real surfaces intersect (particles created inside each other or
+// inside a wall). On every step, an error if, while there are contacts, a pair within reach
+// approaches by more than epsilon per step (or, once a particle-wall contact has intersecting
+// surfaces, a particle moves more than epsilon per step against its force): the time step is
+// too large for the soft layer, and particles would pass through each other.
+//
 // The per-atom array is visible to dumps as f_ID[1..8]: shape index, quaternion w x y z
 // (body principal frame -> space), angular momentum Lx Ly Lz (space frame, kg m^2/s).
 #pragma once
@@ -36,6 +43,8 @@ public:
   void init() override;
   void setup_pre_force(int) override;
   void pre_force(int) override;
+  void post_force(int) override;
+  void end_of_step() override;
 
   void grow_arrays(int) override;
   void copy_arrays(int, int, int) override;
@@ -90,6 +99,15 @@ private:
   double **state_ = nullptr;
   double **pending_ = nullptr; // per atom: f(3), torque(3), flag
 
+  bool overlaps_checked_ = false;
+  void check_initial_overlaps();
+  // The pair (tag_j > 0) or particle that moved farthest towards a contact this step.
+  struct Unresolved {
+    double step = 0.0, speed = 0.0; // m per step, m/s
+    long tag_i = 0, tag_j = 0;
+  } unresolved_;
+  void find_unresolved_wall_contact();
+  void report_unresolved_contacts();
   void initialise_atom(int i);
   int initialise_unset_atoms();
   void apply_mass_and_radius(int i);

@@ -84,7 +84,7 @@ TEST(TriangleBoxes, TwoStageCullKeepsExactlyTheFullCullsPairs) {
     TriangleBoxes ba, bb;
     compute_triangle_boxes(a, ba);
     compute_triangle_boxes(b, bb);
-    std::vector<TrianglePairIndex> full, two(static_cast<std::size_t>(na) * nb);
+    std::vector<TrianglePairIndex> full, two;
     std::vector<std::uint8_t> keep(nb);
     for (int i = 0; i < na; ++i) {
       overlapping_boxes(ba, i, bb, margin, keep.data());
@@ -92,7 +92,7 @@ TEST(TriangleBoxes, TwoStageCullKeepsExactlyTheFullCullsPairs) {
         if (keep[j])
           full.push_back({i, j});
     }
-    const int count = cull_triangle_pairs(ba, bb, margin, scratch, two.data());
+    const int count = cull_triangle_pairs(ba, bb, margin, scratch, two);
     ASSERT_EQ(count, static_cast<int>(full.size())) << "seed " << seed;
     for (int k = 0; k < count; ++k) {
       ASSERT_EQ(two[k].a, full[k].a) << "seed " << seed << " entry " << k;
@@ -136,6 +136,6 @@ TEST(TriangleBoxes, WholeBoxContainsTriangleBoxesAndEmptySetCullsAll) {
   compute_triangle_boxes(TriangleSoA{}, none);
   CullScratch scratch;
   std::vector<TrianglePairIndex> pairs(1);
-  EXPECT_EQ(cull_triangle_pairs(boxes, none, 1.0, scratch, pairs.data()), 0);
-  EXPECT_EQ(cull_triangle_pairs(none, boxes, 1.0, scratch, pairs.data()), 0);
+  EXPECT_EQ(cull_triangle_pairs(boxes, none, 1.0, scratch, pairs), 0);
+  EXPECT_EQ(cull_triangle_pairs(none, boxes, 1.0, scratch, pairs), 0);
 }

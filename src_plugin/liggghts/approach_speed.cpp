@@ -1,0 +1,111 @@
+#include "approach_speed.h"
+
+#include "pair_tri_gran.h"
+
+#include "atom.h"
+#include "force.h"
+#include "lammps.h"
+#include "neigh_list.h"
+#include "neighbor.h"
+
+#include <cmath>
+#include <limits>
+
+namespace tri_liggghts {
+namespace {
+
+struct PairGeometry {
+  double gap, normal_speed, spin_speed;
+};
+
+PairGeometry geometry(const LAMMPS_NS::Atom *atom, int i, int j) {
+  double **x = atom->x, **v = atom->v, **omega = atom->omega;
+  const double *radius = atom->radius;
+  const double d[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
+  const double dv[3] = {v[j][0] - v[i][0], v[j][1] - v[i][1], v[j][2] - v[i][2]};
+  const double r = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  PairGeometry g;
+  g.gap = r - radius[i] - radius[j];
+  // Coincident centres: no direction to approach along; count the whole relative speed.
+  g.normal_speed = r > 0.0 ? -(dv[0] * d[0] + dv[1] * d[1] + dv[2] * d[2]) / r
+                           : std::sqrt(dv[0] * dv[0] + dv[1] * dv[1] + dv[2] * dv[2]);
+  auto norm = [](const double *w) { return std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]); };
+  g.spin_speed = norm(omega[i]) * radius[i] + norm(omega[j]) * radius[j];
+  return g;
+}
+
+// Calls f(i, j) for every pair of pair tri/gran's list; false if there is no such list.
+template <class F> bool for_each_listed_pair(LAMMPS_NS::LAMMPS *lmp, F f) {
+  auto *pair = dynamic_cast<LAMMPS_NS::PairTriGran *>(lmp->force->pair);
+  if (!pair || !pair->list || !pair->list->ilist)
+    return false;
+  const LAMMPS_NS::NeighList *list = pair->list;
+  for (int ii = 0; ii < list->inum; ++ii) {
+    const int i = list->ilist[ii];
+    const int *jlist = list->firstneigh[i];
+    for (int jj = 0; jj < list->numneigh[i]; ++jj)
+      f(i, jlist[jj] & NEIGHMASK);
+  }
+  return true;
+}
+
+} // namespace
+
+PairApproach pair_dt_limit(LAMMPS_NS::LAMMPS *lmp, double depth) {
+  PairApproach out;
+  out.dt_limit = std::numeric_limits<double>::infinity();
+  const LAMMPS_NS::Atom *atom = lmp->atom;
+  for_each_listed_pair(lmp, [&](int i, int j) {
+    const PairGeometry g = geometry(atom, i, j);
+    const double closing = std::max(g.normal_speed, 0.0) + g.spin_speed;
+    if (!(closing > 0.0))
+      return;
+    double limit;
+    if (g.gap <= 0.0)
+      limit = depth / closing;
+    else if (g.normal_speed > 0.0)
+      limit = g.gap / g.normal_speed + depth / closing;
+    else
+      return; // apart and not approaching: rotation alone cannot close a bounding-sphere gap
+    if (limit < out.dt_limit) {
+      out.dt_limit = limit;
+      out.speed = closing;
+      out.tag_i = atom->tag[i];
+      out.tag_j = atom->tag[j];
+    }
+  });
+  return out;
+}
+
+FastestPair fastest_pair_within_reach(LAMMPS_NS::LAMMPS *lmp) {
+  FastestPair out;
+  const LAMMPS_NS::Atom *atom = lmp->atom;
+  for_each_listed_pair(lmp, [&](int i, int j) {
+    const PairGeometry g = geometry(atom, i, j);
+    if (g.gap < 0.0 && g.normal_speed > out.normal_speed) {
+      out.normal_speed = g.normal_speed;
+      out.tag_i = atom->tag[i];
+      out.tag_j = atom->tag[j];
+    }
+  });
+  return out;
+}
+
+FastestParticle fastest_particle(LAMMPS_NS::LAMMPS *lmp) {
+  FastestParticle out;
+  const LAMMPS_NS::Atom *atom = lmp->atom;
+  double **v = atom->v, **omega = atom->omega;
+  for (int i = 0; i < atom->nlocal; ++i) {
+    const double speed = std::sqrt(v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2]) +
+                         std::sqrt(omega[i][0] * omega[i][0] + omega[i][1] * omega[i][1] +
+                                   omega[i][2] * omega[i][2]) *
+                             atom->radius[i];
+    if (speed > out.speed) {
+      out.speed = speed;
+      out.tag = atom->tag[i];
+    }
+  }
+  return out;
+}
+
+} // namespace tri_liggghts

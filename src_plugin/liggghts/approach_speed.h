@@ -1,0 +1,49 @@
+// How fast particles close in on each other, from pair tri/gran's neighbour list (every pair
+// whose bounding spheres, radius = bounding radius + epsilon, are within the neighbour skin).
+// Read by fix tri/adapt_dt (to bound dt before a step) and fix tri/particles (to recognise a
+// step that carried a pair through its soft layers). Local to this rank: with `newton off`,
+// a pair that spans two ranks is seen whole on both.
+//
+//   gap    |x_j - x_i| - radius_i - radius_j: below 0 the soft layers may touch (m)
+//   normal speed   -(v_j - v_i) . (x_j - x_i) / |x_j - x_i|: > 0 when the centres approach
+//   closing speed  normal speed + |omega_i| R_i + |omega_j| R_j (R: bounding radius): what
+//                  any pair of surface points can approach at, rotation included (m/s)
+#pragma once
+
+namespace LAMMPS_NS {
+class LAMMPS;
+}
+
+namespace tri_liggghts {
+
+struct PairApproach {
+  // Largest step (s) that keeps every listed pair from advancing more than `depth` (m) into
+  // the region where its soft layers may touch: a pair at gap g > 0 closing at normal speed
+  // u first needs g / u to get there. +infinity when nothing approaches.
+  double dt_limit;
+  double speed = 0.0; // closing speed of the pair that sets dt_limit (m/s)
+  long tag_i = 0, tag_j = 0;
+};
+
+// Pairs of pair tri/gran's list on this rank (none without pair tri/gran or before its list
+// exists).
+PairApproach pair_dt_limit(LAMMPS_NS::LAMMPS *lmp, double depth);
+
+struct FastestPair {
+  double normal_speed = 0.0; // m/s, largest among pairs within reach (gap < 0)
+  long tag_i = 0, tag_j = 0;
+};
+
+// The pair within reach whose centres approach fastest on this rank (normal speed only: a
+// spinning pair that is being pushed apart is not approaching).
+FastestPair fastest_pair_within_reach(LAMMPS_NS::LAMMPS *lmp);
+
+struct FastestParticle {
+  double speed = 0.0; // |v| + |omega| * radius, m/s
+  long tag = 0;
+};
+
+// The fastest owned particle on this rank, rotation included.
+FastestParticle fastest_particle(LAMMPS_NS::LAMMPS *lmp);
+
+} // namespace tri_liggghts
