@@ -2,6 +2,7 @@
 #include "contact_reduction.h"
 
 #include "contact_polygon.h"
+#include "point_links.h"
 
 #include <algorithm>
 #include <limits>
@@ -50,58 +51,6 @@ bool deeper(const Raw &a, const Raw &b) {
     if (a.point[k] != b.point[k])
       return a.point[k] < b.point[k];
   return false;
-}
-
-int find(std::vector<int> &parent, int i) {
-  while (parent[i] != i) {
-    parent[i] = parent[parent[i]];
-    i = parent[i];
-  }
-  return i;
-}
-
-// Union by smaller index, so every root is the deepest member of its component.
-void unite(std::vector<int> &parent, int i, int j) {
-  i = find(parent, i);
-  j = find(parent, j);
-  if (i < j)
-    parent[j] = i;
-  else if (j < i)
-    parent[i] = j;
-}
-
-// Connected components of the raw points (already sorted) under |p_i - p_j| <= link; a sweep
-// along the axis of largest extent keeps the pair tests near-linear for a patch.
-void link_components(const std::vector<Raw> &raw, double link, std::vector<int> &parent,
-                     std::vector<int> &order) {
-  const int n = static_cast<int>(raw.size());
-  parent.resize(n);
-  std::iota(parent.begin(), parent.end(), 0);
-  Vector3d lo = Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-  for (const Raw &r : raw) {
-    lo = lo.cwiseMin(r.point);
-    hi = hi.cwiseMax(r.point);
-  }
-  int axis = 0;
-  (hi - lo).maxCoeff(&axis);
-  order.resize(n);
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](int i, int j) {
-    if (raw[i].point[axis] != raw[j].point[axis])
-      return raw[i].point[axis] < raw[j].point[axis];
-    return i < j;
-  });
-  const double link2 = link * link;
-  for (int s = 0; s < n; ++s) {
-    const Raw &ri = raw[order[s]];
-    for (int t = s + 1; t < n; ++t) {
-      const Raw &rj = raw[order[t]];
-      if (rj.point[axis] - ri.point[axis] > link)
-        break;
-      if ((rj.point - ri.point).squaredNorm() <= link2)
-        unite(parent, order[s], order[t]);
-    }
-  }
 }
 
 // Deep penetration: in a component with intersecting pairs, separated pairs that face against
@@ -249,12 +198,15 @@ void reduce_clusters(std::vector<Raw> &raw, double layer, const ReductionParams 
                      const Vector3d &ref, const Faces &faces, ReductionWorkspace &work,
                      std::vector<ContactPoint> &out) {
   const int n = static_cast<int>(raw.size());
-  link_components(raw, params.link_length, work.parent, work.order);
+  work.points.resize(n);
+  for (int i = 0; i < n; ++i)
+    work.points[i] = raw[i].point;
+  link_points(work.points, params.link_length, work.parent, work.links);
   // Members of each component, components in the order of their deepest member.
   std::vector<int> &label = work.label;
   label.resize(n);
   for (int i = 0; i < n; ++i)
-    label[i] = find(work.parent, i);
+    label[i] = link_root(work.parent, i);
   std::vector<int> &members = work.order; // reused: all indices grouped by component
   members.resize(n);
   std::iota(members.begin(), members.end(), 0);

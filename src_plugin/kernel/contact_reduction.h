@@ -133,12 +133,13 @@
 // output is bit-identical for any permutation of the input (e.g. any thread count upstream).
 // Output order: deepest contact first.
 //
-// Cost: O(n log n) for n raw contacts (sort + sweep along x for the links), plus
+// Cost: O(n log n) for n raw contacts (sort + sweep or grid for the links, point_links.h), plus
 // O(n * classes) for the normal split, plus one polygon clip (fixed-size, on the stack) per
 // member; no allocation when the workspace is reused.
 #pragma once
 
 #include "particle_contacts.h" // TriangleContact
+#include "point_links.h"
 #include "triangle_soa.h"
 
 #include <Eigen/Core>
@@ -196,6 +197,8 @@ struct ReductionWorkspace {
     bool intersecting;
   };
   std::vector<Raw> raw;
+  std::vector<Eigen::Vector3d> points; // raw[i].point, for the links of step 1
+  LinkScratch links;
   std::vector<int> parent, order, label, cls, absorbed, seeds, alive, group;
 };
 
