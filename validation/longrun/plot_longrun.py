@@ -51,7 +51,7 @@ def main():
     ax2.set_ylim(0, rows[0][2])
     lines = ax.get_legend_handles_labels()
     lines2 = ax2.get_legend_handles_labels()
-    ax.legend(lines[0] + lines2[0], lines[1] + lines2[1], loc="upper center", fontsize=8, ncol=2)
+    ax.legend(lines[0] + lines2[0], lines[1] + lines2[1], loc="center right", fontsize=8)
     ax.set_title(f"hopper, {int(rows[0][2])} rocks of 40 triangles, dt 2e-5 s, "
                  f"steps 0..{int(rows[-1][0])}", fontsize=10)
     fig.tight_layout()
