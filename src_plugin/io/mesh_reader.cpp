@@ -242,15 +242,16 @@ void check_ply_complete(const std::string &path, const std::string &bytes) {
   auto bad = [&](const std::string &what) { fail(path, "PLY file is malformed: " + what); };
   if (bytes.compare(0, 3, "ply") != 0)
     fail(path, "not a PLY file: it does not start with \"ply\"");
-  const std::size_t end_header = bytes.find("end_header");
-  if (end_header == std::string::npos)
+  // The first line that starts with end_header (a comment may mention it).
+  const std::size_t line_start = bytes.find("\nend_header");
+  if (line_start == std::string::npos)
     bad("no \"end_header\" line");
+  const std::size_t end_header = line_start + 1;
   std::size_t body = bytes.find('\n', end_header);
   body = body == std::string::npos ? bytes.size() : body + 1;
   // VTK only stops at a line that is exactly end_header; anything else keeps it reading the
   // body as header, past the checks below.
-  if (end_header == 0 || bytes[end_header - 1] != '\n' ||
-      bytes.find_first_not_of(" \t\r\n", end_header + 10) < body)
+  if (bytes.find_first_not_of(" \t\r\n", end_header + 10) < body)
     bad("\"end_header\" is not a line of its own");
 
   std::istringstream header(bytes.substr(0, end_header));
@@ -396,69 +397,68 @@ void check_ply_complete(const std::string &path, const std::string &bytes) {
 }
 
 // --- OBJ index check ----------------------------------------------------------------------
-// vtkOBJReader range-checks neither texture-coordinate nor normal indices of faces: "f 1//1"
-// in a file without "vn" lines reads through a null array. Vertex indices are checked after
-// VTK has read the file (check_point_ids); texture and normal indices must be checked before.
+// vtkOBJReader range-checks none of a face's indices before it uses them: "f 1//1" in a file
+// without "vn" lines, or "f 9/1 ..." with 3 vertices, reads through a null array or past the
+// end of one. So every index of every face, line and point element is checked here, against
+// what the file has defined up to that line (negative indices count back from there, as in
+// VTK).
 void check_obj_indices(const std::string &path, const std::string &bytes) {
   std::istringstream lines(bytes);
   std::string line;
-  std::vector<std::vector<std::string>> faces; // the corner tokens of each face, as written
-  long long num_tcoords = 0, num_normals = 0;
+  long long counts[3] = {0, 0, 0}; // v, vt, vn lines so far
+  long long element = 0;           // f, l and p lines so far
   while (std::getline(lines, line)) {
     std::istringstream words(line);
     std::string keyword, corner;
     words >> keyword;
-    if (keyword == "vt") {
-      ++num_tcoords;
-    } else if (keyword == "vn") {
-      ++num_normals;
-    } else if (keyword == "f" || keyword == "l" || keyword == "p") {
-      faces.emplace_back();
-      while (words >> corner)
-        faces.back().push_back(corner);
+    if (keyword == "v" || keyword == "vt" || keyword == "vn") {
+      ++counts[keyword == "v" ? 0 : keyword == "vt" ? 1 : 2];
+      continue;
     }
-  }
-  for (std::size_t i = 0; i < faces.size(); ++i) {
-    auto malformed = [&](const std::string &corner, const std::string &why) {
+    if (keyword != "f" && keyword != "l" && keyword != "p")
+      continue;
+    const long long i = element++;
+    auto malformed = [&](const std::string &why) {
       std::ostringstream os;
-      os << "OBJ file is malformed: element " << i << " (a face, line or point), corner \""
-         << corner << "\": " << why;
+      os << "mesh file is malformed: face " << i << " " << why;
       fail(path, os.str());
     };
-    int form = -1; // slashes of the first corner; VTK assumes every corner has the same form
-    for (const std::string &corner : faces[i]) {
+    int form = -1; // VTK assumes that every corner of an element has the first one's form
+    while (words >> corner) {
       // v, v/vt, v//vn or v/vt/vn: VTK takes a slash as the promise of the field after it.
       const int slashes = static_cast<int>(std::count(corner.begin(), corner.end(), '/'));
       if (slashes > 2)
-        malformed(corner, "more than two slashes");
+        malformed("has a corner with more than two slashes: \"" + corner + "\"");
       const std::size_t slash1 = corner.find('/');
       const std::size_t slash2 = slashes == 2 ? corner.find('/', slash1 + 1) : std::string::npos;
-      std::string fields[2];
+      std::string fields[3] = {corner.substr(0, slash1)};
       if (slashes >= 1)
-        fields[0] =
+        fields[1] =
             corner.substr(slash1 + 1, slashes == 2 ? slash2 - slash1 - 1 : std::string::npos);
       if (slashes == 2)
-        fields[1] = corner.substr(slash2 + 1);
-      const bool has[2] = {!fields[0].empty(), !fields[1].empty()};
-      if ((slashes == 1 && !has[0]) || (slashes == 2 && !has[1]))
-        malformed(corner, "an index is missing after a slash");
-      const int this_form = slashes + 3 * has[0];
+        fields[2] = corner.substr(slash2 + 1);
+      if (fields[0].empty() || (slashes == 1 && fields[1].empty()) ||
+          (slashes == 2 && fields[2].empty()))
+        malformed("has a corner with an index missing: \"" + corner + "\"");
+      const int this_form = slashes + 3 * !fields[1].empty();
       if (form >= 0 && this_form != form)
-        malformed(corner, "its corners mix the forms v, v/vt, v//vn and v/vt/vn");
+        malformed("mixes the corner forms v, v/vt, v//vn and v/vt/vn: \"" + corner + "\"");
       form = this_form;
-      const long long counts[2] = {num_tcoords, num_normals};
-      const char *names[2] = {"texture coordinate", "normal"};
-      for (int k = 0; k < 2; ++k) {
-        if (!has[k])
+      static const char *names[3] = {"vertex", "texture coordinate", "normal"};
+      static const char *plurals[3] = {"vertices", "texture coordinates", "normals"};
+      for (int k = 0; k < 3; ++k) {
+        if (fields[k].empty())
           continue;
         char *end = nullptr;
         errno = 0;
         const long long index = std::strtoll(fields[k].c_str(), &end, 10);
-        if (*end != '\0' || errno != 0 || index < 1 || index > counts[k]) {
+        const bool in_range =
+            (index >= 1 && index <= counts[k]) || (index < 0 && index >= -counts[k]);
+        if (*end != '\0' || errno != 0 || !in_range) {
           std::ostringstream os;
-          os << "refers to " << names[k] << " \"" << fields[k] << "\", but there are " << counts[k]
-             << " (1-based)";
-          malformed(corner, os.str());
+          os << "refers to " << names[k] << " " << fields[k] << " (1-based), but there are "
+             << counts[k] << " " << (counts[k] == 1 ? names[k] : plurals[k]) << " before it";
+          malformed(os.str());
         }
       }
     }

@@ -23,10 +23,11 @@
 // (VTK would take it for binary); a PLY file whose body is shorter than its header announces
 // or whose faces name missing vertices, or without vertex x, y, z or face vertex_indices
 // (checked before VTK reads it: VTK 9.1's PLY reader aborts the process on a truncated file
-// and dereferences a missing element); an OBJ face naming a missing vertex, texture
-// coordinate or normal (VTK 9.1 reads through a null array for the last two); anything VTK
-// reports as an error or warning while reading (captured, never printed); a file with no
-// triangles; a coordinate that is not finite as a 32-bit float (1e39, nan, inf).
+// and dereferences a missing element); an OBJ face naming a vertex, texture coordinate or
+// normal not defined before it, or mixing corner forms (checked before VTK reads it, which
+// uses the indices unchecked); anything VTK reports as an error or warning while reading
+// (captured, never printed); a file with no triangles; a coordinate that is not finite as a
+// 32-bit float (1e39, nan, inf).
 // Thread safety: calls are serialised internally (VTK's message window is process-global).
 #pragma once
 

@@ -325,12 +325,24 @@ TEST_F(MeshReader, CoordinateBeyondFloatRange) {
 TEST_F(MeshReader, ObjTextureAndNormalIndicesAreChecked) {
   const std::string tet = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n";
   EXPECT_TRUE(TextFileFailsWith("no_normals.obj", tet + "f 1//1 3//1 2//1\n",
-                                "refers to normal \"1\", but there are 0"));
-  EXPECT_TRUE(TextFileFailsWith("bad_tcoord.obj", tet + "vt 0 0\nf 1/1 3/2 2/1\n",
-                                "refers to texture coordinate \"2\", but there are 1"));
+                                "refers to normal 1 (1-based), but there are 0 normals"));
+  EXPECT_TRUE(TextFileFailsWith(
+      "bad_tcoord.obj", tet + "vt 0 0\nf 1/1 3/2 2/1\n",
+      "refers to texture coordinate 2 (1-based), but there are 1 texture coordinate before it"));
   EXPECT_TRUE(
-      TextFileFailsWith("slash.obj", tet + "f 4/ 3 2\n", "an index is missing after a slash"));
-  EXPECT_TRUE(TextFileFailsWith("mixed.obj", tet + "vn 0 0 1\nf 1//1 3 2\n", "mix the forms"));
+      TextFileFailsWith("slash.obj", tet + "f 4/ 3 2\n", "has a corner with an index missing"));
+  EXPECT_TRUE(
+      TextFileFailsWith("mixed.obj", tet + "vn 0 0 1\nf 1//1 3 2\n", "mixes the corner forms"));
+  // Found by a longer run: texture and normal indices in range, vertices missing.
+  EXPECT_TRUE(TextFileFailsWith("no_vertices.obj", "vn 0 0 1\nvt 0 0\nf 1/1/1 3/1/1 2/1/1\n",
+                                "refers to vertex 1 (1-based), but there are 0 vertices"));
+  // An index beyond long long (strtoll saturates; negating its result overflowed).
+  EXPECT_TRUE(TextFileFailsWith("huge.obj", tet + "f -4 -3 -66666666666666666666661\n",
+                                "refers to vertex -66666666666666666666661 (1-based)"));
+  // Negative indices count back from the element, as in VTK.
+  write_text(file("relative.obj"), tet + "vt 0 0\nf -4/1 -2/1 -3/1\nf -4/1 -3/1 -1/1\n"
+                                         "f -4/1 -1/1 -2/1\nf -3/1 -2/1 -1/1\n");
+  EXPECT_EQ(read_error(file("relative.obj")), "");
   // Well-formed texture and normal indices still read (VTK wants one form in every face).
   write_text(file("ok.obj"), tet + "vt 0 0\nvn 0 0 1\nf 1/1/1 3/1/1 2/1/1\nf 1/1/1 2/1/1 4/1/1\n"
                                    "f 1/1/1 4/1/1 3/1/1\nf 2/1/1 3/1/1 4/1/1\n");
@@ -356,6 +368,13 @@ TEST_F(MeshReader, PlyStructureThatVtkCannotRead) {
                                 head + vertex + face + "end_header\n0 0 0\n1 " +
                                     std::string(1, '\0') + " 0\n0 1 0\n3 0 1 2\n",
                                 "ASCII PLY file is not text: byte 0x0"));
+  // A comment may name end_header; the header ends at the line that is end_header.
+  write_text(file("comment.ply"),
+             head + "comment the end_header line ends the header\n" +
+                 "element vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+                 "element face 4\nproperty list uchar int vertex_indices\nend_header\n"
+                 "0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+  EXPECT_EQ(read_error(file("comment.ply")), "");
   // One element per line: a short line is a truncated element even if the next fills it.
   EXPECT_TRUE(TextFileFailsWith("split.ply",
                                 head + vertex + face + "end_header\n0 0\n0 1 0 0\n0 1 0\n3 0 1 2\n",
