@@ -42,7 +42,7 @@ bitwise equal at every 500 steps to 16000 (all zeros in the table).
 
 The test runs 12000 steps (0.24 s): free fall to ~5600, the funnel (particle-particle and
 particle-wall contacts) and the outlet, and the first rocks landing on the floor; contacts in
-about 40 % of the thermo samples.
+about 40 % of the thermo samples. 6 s wall on an idle 2-core machine.
 """
 import argparse
 import math
