@@ -92,6 +92,26 @@ bool is_convex(const TriangleMesh &mesh, double tolerance) {
   return true;
 }
 
+// A closed, consistently oriented surface that folds through itself (validate_mesh does not
+// test self-intersection) can still enclose a positive volume, yet its divergence-theorem
+// "inertia" is that of no solid: a moment <= 0, or one larger than the sum of the other two,
+// would make the rigid-body integrator accelerate a spin without bound. Every real solid has
+// I_k > 0 and I_i + I_j >= I_k (equality only for a flat plate); 1e-9 of the largest absorbs
+// rounding.
+void check_solid_inertia(const std::string &name, const Eigen::Vector3d &moments) {
+  const double largest = moments.maxCoeff(), tol = 1e-9 * std::abs(largest);
+  const bool positive = moments.minCoeff() > 0.0;
+  const bool triangle = moments.sum() - 2.0 * largest >= -tol;
+  if (positive && triangle && std::isfinite(moments.sum()))
+    return;
+  std::ostringstream os;
+  os << "shape '" << name << "': principal moments of inertia per density " << moments.x() << ", "
+     << moments.y() << ", " << moments.z()
+     << " are not those of a solid (each must be positive and at most the sum of the other "
+        "two): the surface probably intersects itself";
+  throw ShapeError(os.str());
+}
+
 Shape make_shape(std::string name, TriangleMesh mesh) {
   try {
     validate_mesh(mesh);
@@ -100,6 +120,7 @@ Shape make_shape(std::string name, TriangleMesh mesh) {
   }
   remove_unreferenced_vertices(mesh);
   const MassProperties mp = mass_properties(mesh);
+  check_solid_inertia(name, mp.principal_moments);
 
   Shape shape;
   shape.name = std::move(name);

@@ -67,9 +67,10 @@ void check_mesh(const tri::TriangleMesh &mesh) {
 
 void check_shape(const tri::Shape &s) {
   check(std::isfinite(s.volume) && s.volume > 0, "shape volume not finite and positive");
-  // Finite only: make_shape does not detect self-intersection (mesh_validation.h), and a
-  // folded closed mesh can have negative principal moments (README.md, "Open").
-  check(s.inertia_per_density.allFinite(), "shape inertia not finite");
+  // make_shape refuses moments of no solid (a folded, self-intersecting surface).
+  const Eigen::Vector3d &I = s.inertia_per_density;
+  check(I.allFinite() && I.minCoeff() > 0, "shape inertia not finite and positive");
+  check(I.sum() - 2.0 * I.maxCoeff() >= -1e-9 * I.maxCoeff(), "shape inertia breaks I1 + I2 >= I3");
   check(std::isfinite(s.bounding_radius) && s.bounding_radius > 0, "bounding radius");
   check(std::isfinite(s.min_edge_length) && s.min_edge_length > 0, "shortest edge");
   check(s.soa.num_triangles() == s.mesh.num_triangles(), "SoA and mesh disagree");

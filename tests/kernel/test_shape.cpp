@@ -96,6 +96,24 @@ TEST(Shape, ErrorsNameTheShape) {
   }
 }
 
+// A cube with one corner pushed through to the opposite side: closed, consistently oriented,
+// positive volume (validate_mesh accepts it), but it folds through itself and its
+// divergence-theorem inertia has negative moments (found by fuzz_ply). Refused, naming why.
+TEST(Shape, SelfIntersectingSurfaceWithImpossibleInertiaIsRefused) {
+  tri::TriangleMesh m = box(1, 1, 1);
+  m.vertices[1] = -m.vertices[1];
+  try {
+    tri::make_shape("folded", m);
+    FAIL() << "accepted a folded cube";
+  } catch (const tri::ShapeError &e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("shape 'folded'"), std::string::npos) << what;
+    EXPECT_NE(what.find("not those of a solid"), std::string::npos) << what;
+  }
+  // Flat plates sit on the limit I1 + I2 = I3 and stay accepted.
+  EXPECT_NO_THROW(tri::make_shape("plate", box(1, 1, 1e-4)));
+}
+
 TEST(Shape, ScaledScalesVolumeAndInertia) {
   const tri::Shape one = tri::make_shape("a", box(3, 1, 2));
   const tri::Shape two = tri::make_shape("b", tri::scaled(box(3, 1, 2), 2.0));
