@@ -264,9 +264,17 @@ void check_ply_complete(const std::string &path, const std::string &bytes) {
     if (keyword == "format") {
       words >> format;
     } else if (keyword == "element") {
+      // Exactly "element NAME COUNT": vtkPLY reads "1.0" as a count and then frees the
+      // element's property list twice when it has none (found by fuzz_ply).
       PlyElement e;
-      if (!(words >> e.name >> e.count))
+      std::string count, extra;
+      char *end = nullptr;
+      if (!(words >> e.name >> count) || (words >> extra) || count[0] == '-' ||
+          (e.count = std::strtoull(count.c_str(), &end, 10), *end != '\0'))
         bad("bad element line \"" + line + "\"");
+      for (const PlyElement &other : elements)
+        if (other.name == e.name)
+          bad("element \"" + e.name + "\" is declared twice");
       elements.push_back(e);
     } else if (keyword == "property") {
       if (elements.empty())
@@ -286,10 +294,17 @@ void check_ply_complete(const std::string &path, const std::string &bytes) {
       if (ply_type_size(p.value_type) == 0)
         bad("unknown property type \"" + p.value_type + "\"");
       elements.back().properties.push_back(p);
+    } else if (keyword != "ply" && keyword != "comment" && keyword != "obj_info") {
+      // vtkPLY mistakes other header lines for data and reads through a null word pointer
+      // (an empty line followed by "0 000 1", found by fuzz_ply).
+      bad("unexpected header line \"" + line + "\"");
     }
   }
   if (format != "ascii" && format != "binary_little_endian" && format != "binary_big_endian")
     bad("unknown format \"" + format + "\"");
+  for (const PlyElement &e : elements)
+    if (e.properties.empty())
+      bad("element \"" + e.name + "\" has no properties");
   check_text(path, bytes, 0, format == "ascii" ? bytes.size() : body,
              format == "ascii" ? "ASCII PLY file is not text" : "PLY header is not text");
 
@@ -338,10 +353,18 @@ void check_ply_complete(const std::string &path, const std::string &bytes) {
       bad("\"" + token + "\" where an integer was expected");
     return true;
   };
+  // ASCII values must be numbers: vtkPLY's word splitter rewrites some words in place (a
+  // value "0vertex_index" made it read through a wild pointer, found by fuzz_ply).
   auto skip_value = [&](const std::string &type) {
     if (ascii) {
       std::string token;
-      return static_cast<bool>(tokens >> token);
+      if (!(tokens >> token))
+        return false;
+      char *end = nullptr;
+      std::strtod(token.c_str(), &end);
+      if (end == token.c_str() || *end != '\0')
+        bad("\"" + token + "\" where a number was expected");
+      return true;
     }
     pos += ply_type_size(type);
     return pos <= bytes.size();
@@ -394,6 +417,10 @@ void check_ply_complete(const std::string &path, const std::string &bytes) {
       }
     }
   }
+  // Complete, but vtkPLYReader frees a face twice when the last line of an ASCII file has no
+  // line end (found by fuzz_ply).
+  if (ascii && bytes.size() > body && bytes.back() != '\n')
+    fail(path, "PLY file is truncated: its last line has no line end");
 }
 
 // --- OBJ index check ----------------------------------------------------------------------

@@ -379,6 +379,26 @@ TEST_F(MeshReader, PlyStructureThatVtkCannotRead) {
   EXPECT_TRUE(TextFileFailsWith("split.ply",
                                 head + vertex + face + "end_header\n0 0\n0 1 0 0\n0 1 0\n3 0 1 2\n",
                                 "PLY file is truncated: vertex 0 of 3"));
+  // Values must be numbers: vtkPLY rewrites some words in place and then reads through a wild
+  // pointer ("0vertex_index", found by fuzz_ply).
+  EXPECT_TRUE(TextFileFailsWith("word.ply",
+                                head + vertex + face + "end_header\n0 0vertex_index 0\n1 0 0\n"
+                                    "0 1 0\n3 0 1 2\n",
+                                "\"0vertex_index\" where a number was expected"));
+  // More inputs vtkPLY crashes on, refused first (fuzz_ply): a count that is not an integer,
+  // an element without properties, a stray header line, a last line without its line end.
+  const std::string body = "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  EXPECT_TRUE(TextFileFailsWith("count.ply", head + "element vertex 3.0\n" +
+                                    vertex.substr(vertex.find('\n') + 1) + face + "end_header\n" + body,
+                                "bad element line \"element vertex 3.0\""));
+  EXPECT_TRUE(TextFileFailsWith("empty_element.ply",
+                                head + "element extra 1\n" + vertex + face + "end_header\n" + body,
+                                "element \"extra\" has no properties"));
+  EXPECT_TRUE(TextFileFailsWith("stray.ply", head + vertex + face + "\n0 000 1\nend_header\n" + body,
+                                "unexpected header line \"\""));
+  EXPECT_TRUE(TextFileFailsWith("no_line_end.ply",
+                                head + vertex + face + "end_header\n" + body.substr(0, body.size() - 1),
+                                "its last line has no line end"));
 }
 
 TEST_F(MeshReader, TruncatedObj) {
