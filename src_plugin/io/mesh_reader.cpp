@@ -268,10 +268,10 @@ void check_ply_complete(const std::string &path, const std::string &bytes) {
       // element's property list twice when it has none (found by fuzz_ply).
       PlyElement e;
       std::string count, extra;
-      char *end = nullptr;
-      if (!(words >> e.name >> count) || (words >> extra) || count[0] == '-' ||
-          (e.count = std::strtoull(count.c_str(), &end, 10), *end != '\0'))
+      if (!(words >> e.name >> count) || (words >> extra) ||
+          count.find_first_not_of("0123456789") != std::string::npos)
         bad("bad element line \"" + line + "\"");
+      e.count = std::strtoull(count.c_str(), nullptr, 10);
       for (const PlyElement &other : elements)
         if (other.name == e.name)
           bad("element \"" + e.name + "\" is declared twice");
