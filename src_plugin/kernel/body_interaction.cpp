@@ -1,59 +1,67 @@
 #include "body_interaction.h"
 
+#include "point_triangle.h"
+
 #include <algorithm>
+#include <limits>
 
 namespace tri {
+
+namespace {
+
+// Where no normal is defined (coincident triangles), push along the line of centres, or for a
+// wall along the direction from the particle's centre to the wall's closest point.
+// O(patch triangles), small beside the triangle pairs of the same interaction.
+Eigen::Vector3d reference_direction(const Body &a, const Body &b) {
+  Eigen::Vector3d towards = b.state.x - a.state.x;
+  if (b.is_wall()) {
+    double best = std::numeric_limits<double>::infinity();
+    const TriangleSoA &t = *b.triangles;
+    for (int k = 0; k < t.num_triangles(); ++k) {
+      const Eigen::Vector3d q = closest_point_on_triangle(a.state.x, t.vertex(k, 0),
+                                                          t.vertex(k, 1), t.vertex(k, 2));
+      const double d2 = (q - a.state.x).squaredNorm();
+      if (d2 < best) {
+        best = d2;
+        towards = q - a.state.x;
+      }
+    }
+  }
+  const double length = towards.norm();
+  return length > 0.0 ? Eigen::Vector3d(towards / length) : Eigen::Vector3d::UnitZ();
+}
+
+} // namespace
+
+std::size_t InteractionScratch::bytes() const {
+  const ReductionWorkspace &r = reduction;
+  std::size_t ints = r.parent.capacity() + r.order.capacity() + r.label.capacity() +
+                     r.cls.capacity() + r.absorbed.capacity() + r.seeds.capacity() +
+                     r.alive.capacity() + r.group.capacity();
+  return distance.bytes() + triangle_contacts.capacity() * sizeof(TriangleContact) +
+         points.capacity() * sizeof(ContactPoint) +
+         r.raw.capacity() * sizeof(ReductionWorkspace::Raw) +
+         (r.points.capacity() + nodes.capacity() + node_velocities.capacity()) * sizeof(Eigen::Vector3d) +
+         ints * sizeof(int);
+}
 
 PairForceResult body_interaction(const Body &a, const Body &b, const InteractionSettings &s,
                                  double dt, double *history, InteractionScratch &scratch,
                                  ContactStats &stats) {
   scratch.triangle_contacts.clear();
   find_triangle_contacts(*a.triangles, a.epsilon, *b.triangles, b.epsilon, s.distance,
-                         scratch.triangle_contacts, stats);
+                         scratch.triangle_contacts, stats, scratch.distance);
 
   ReductionParams params;
   params.method = s.reduction;
   params.link_length =
       recommended_link_length(a.longest_edge, b.longest_edge, a.epsilon, b.epsilon);
   params.min_width = std::min(a.min_edge, b.min_edge);
-  // Where no normal is defined (coincident triangles), push along the line of centres, or
-  // for a wall (mass 0) along the direction the host gave as b's position.
-  const Eigen::Vector3d centres = b.state.x - a.state.x;
-  const double length = centres.norm();
-  params.reference_direction = length > 0.0 ? Eigen::Vector3d(centres / length)
-                                            : Eigen::Vector3d::UnitZ();
+  params.reference_direction = reference_direction(a, b);
   reduce_contacts(scratch.triangle_contacts.data(),
                   static_cast<int>(scratch.triangle_contacts.size()), *a.triangles, a.epsilon,
                   *b.triangles, b.epsilon, params, scratch.reduction, scratch.points);
   return pair_contact_force(scratch.points, a.state, b.state, s.coefficients, dt, history);
-}
-
-} // namespace tri
-
-namespace tri {
-
-void InteractionTally::add(const PairForceResult &r) {
-  ++body_pairs_checked;
-  if (r.contacts_after > 0)
-    ++body_pairs_in_contact;
-  contacts_before += r.contacts_before;
-  contacts_after += r.contacts_after;
-  if (r.intersecting)
-    ++penetrations;
-  max_overlap = std::max(max_overlap, r.max_overlap);
-  min_distance = std::min(min_distance, r.min_distance);
-}
-
-InteractionTally &InteractionTally::operator+=(const InteractionTally &o) {
-  body_pairs_checked += o.body_pairs_checked;
-  body_pairs_in_contact += o.body_pairs_in_contact;
-  contacts_before += o.contacts_before;
-  contacts_after += o.contacts_after;
-  penetrations += o.penetrations;
-  max_overlap = std::max(max_overlap, o.max_overlap);
-  min_distance = std::min(min_distance, o.min_distance);
-  distance += o.distance;
-  return *this;
 }
 
 } // namespace tri

@@ -8,7 +8,7 @@
 #include "contact_force.h"
 #include "particle_contacts.h"
 
-#include <limits>
+#include <cstddef>
 #include <vector>
 
 namespace tri {
@@ -19,46 +19,39 @@ struct InteractionSettings {
   ContactCoefficients coefficients;            // per type pair, filled by the host
 };
 
-// Per-thread scratch, so the force loop allocates nothing once warmed up.
+// Per-thread scratch, owned by the caller, so the force loop allocates nothing once warmed up.
 struct InteractionScratch {
+  ContactWorkspace distance;
   std::vector<TriangleContact> triangle_contacts;
   std::vector<ContactPoint> points;
   ReductionWorkspace reduction;
+  // A wall patch's corners and their velocities, gathered by the host (fix tri/wall).
+  std::vector<Eigen::Vector3d> nodes, node_velocities;
+
+  std::size_t bytes() const; // heap memory held (approximate for the reduction's vectors)
 };
 
+// A particle, or a wall patch: a body of infinite mass (state.mass <= 0) whose state is the
+// rigid motion of its triangles (rigid_motion.h): x the centre of that motion, v its velocity
+// there, omega its spin, so that the wall's velocity at any contact point is exact.
 struct Body {
   const TriangleSoA *triangles = nullptr; // world frame
   double epsilon = 0.0;                   // soft-layer width, m
   double longest_edge = 0.0;              // m; infinity for a wall patch
   double min_edge = 0.0;                  // m, the paper's minimum mesh width
-  BodyState state;                        // mass 0 for a wall
+  BodyState state;                        // mass <= 0 for a wall
+
+  bool is_wall() const { return !(state.mass > 0.0); }
 };
 
-// Forces between a and b for one time step of length dt. `history` holds kHistoryDoubles
-// values kept by the host for this pair (null for tangential no_history). Statistics of the
-// distance kernel are added to `stats`.
+// Forces between a (a particle) and b (a particle or a wall) for one time step of length dt.
+// `history` holds kHistoryDoubles values kept by the host for this pair (null for tangential
+// no_history). Statistics of the distance kernel are added to `stats`. The reference direction
+// of the reduction (contact_reduction.h: for intersecting triangles without a usable normal)
+// is the line of centres for two particles, and for a wall the direction from a's centre to
+// the closest point of the patch.
 PairForceResult body_interaction(const Body &a, const Body &b, const InteractionSettings &s,
                                  double dt, double *history, InteractionScratch &scratch,
                                  ContactStats &stats);
-
-} // namespace tri
-
-namespace tri {
-
-// Step statistics of many interactions, summed in a fixed order by the host (values, no
-// globals); what `compute tri/stats` reports and `fix tri/adapt_dt` reads.
-struct InteractionTally {
-  long long body_pairs_checked = 0;    // bounding spheres overlapped: triangles were examined
-  long long body_pairs_in_contact = 0; // at least one contact point
-  long long contacts_before = 0;       // triangle-pair contacts
-  long long contacts_after = 0;        // contact points after reduction
-  long long penetrations = 0;          // interactions whose real surfaces intersect
-  double max_overlap = 0.0;            // m, deepest soft-layer overlap
-  double min_distance = std::numeric_limits<double>::infinity(); // m, closest triangle pair
-  ContactStats distance;               // the distance kernel's own counters
-
-  void add(const PairForceResult &r);
-  InteractionTally &operator+=(const InteractionTally &o);
-};
 
 } // namespace tri

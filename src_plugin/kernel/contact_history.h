@@ -61,4 +61,33 @@ inline Eigen::Vector3d slot_lever(const double *history, int s) {
 void write_slot(double *history, int s, const Eigen::Vector3d &normal, const Eigen::Vector3d &shear,
                 const Eigen::Vector3d &lever);
 
+// The history of one pair as the kernel sees it. The host stores it as seen from its own
+// (i, j); when the kernel evaluates the pair as (j, i) (`flip`), the values that change sign
+// with the roles are negated, exactly, into a copy and back. During LIGGGHTS's setup, forces
+// are computed without advancing the history (`update` false), so a restarted run continues
+// bit for bit: the kernel then works on a copy that is dropped. `stored` null (no history
+// kept): data() is null.
+class HistoryView {
+public:
+  HistoryView(double *stored, bool flip, bool update) : stored_(stored), flip_(flip), update_(update) {
+    if (!stored_ || (!flip_ && update_))
+      return;
+    for (int v = 0; v < kHistoryDoubles; ++v)
+      copy_[v] = flip_ && history_flips_sign(v) ? -stored_[v] : stored_[v];
+  }
+  HistoryView(const HistoryView &) = delete;
+  HistoryView &operator=(const HistoryView &) = delete;
+  ~HistoryView() {
+    if (stored_ && flip_ && update_)
+      for (int v = 0; v < kHistoryDoubles; ++v)
+        stored_[v] = history_flips_sign(v) ? -copy_[v] : copy_[v];
+  }
+  double *data() { return !stored_ ? nullptr : (!flip_ && update_) ? stored_ : copy_; }
+
+private:
+  double *stored_;
+  bool flip_, update_;
+  double copy_[kHistoryDoubles];
+};
+
 } // namespace tri

@@ -8,7 +8,10 @@
 namespace tri {
 
 HybridCounters &HybridCounters::operator+=(const HybridCounters &o) {
-  add_penalty_counters(*this, o);
+  penalty_pairs += o.penalty_pairs;
+  fallbacks += o.fallbacks;
+  for (int k = 0; k <= kMaxPenaltyIterations; ++k)
+    newton_histogram[k] += o.newton_histogram[k];
   return *this;
 }
 

@@ -37,7 +37,8 @@ struct HybridSettings {
   double cutoff = INFINITY;
 };
 
-// Newton histogram and fallbacks; values summed by the caller.
+// Newton histogram and fallbacks; values summed by the caller. ContactStats
+// (particle_contacts.h) extends this with the culling counters.
 struct HybridCounters {
   long long penalty_pairs = 0; // pairs run through the penalty
   long long fallbacks = 0;     // pairs recomputed by brute force
@@ -47,18 +48,6 @@ struct HybridCounters {
 
   HybridCounters &operator+=(const HybridCounters &o);
 };
-
-// Adds from.penalty_pairs, from.fallbacks and from.newton_histogram to `to`. Both
-// HybridCounters and ContactStats (particle_contacts.h) carry these three counters with the
-// same meaning; ContactStats keeps them as plain fields rather than a HybridCounters member so
-// that its readers (host-layer tallies, kernel_bench) use stats.fallbacks directly. Summing
-// them in this one place keeps the two structs in step when a counter is added.
-template <class To, class From> void add_penalty_counters(To &to, const From &from) {
-  to.penalty_pairs += from.penalty_pairs;
-  to.fallbacks += from.fallbacks;
-  for (int k = 0; k <= kMaxPenaltyIterations; ++k)
-    to.newton_histogram[k] += from.newton_histogram[k];
-}
 
 // Brute force on every pair (vectorised 15 checks, brute_force_block).
 void brute_force_distances(const TriangleSoA &a, const TriangleSoA &b,

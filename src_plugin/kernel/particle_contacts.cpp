@@ -17,27 +17,32 @@ ContactStats &ContactStats::operator+=(const ContactStats &o) {
   triangle_pairs_tested += o.triangle_pairs_tested;
   triangle_pairs_culled += o.triangle_pairs_culled;
   contacts += o.contacts;
-  add_penalty_counters(*this, o);
+  HybridCounters::operator+=(o);
   return *this;
 }
 
-namespace {
+std::size_t ContactWorkspace::bytes() const {
+  auto boxes = [](const TriangleBoxes &b) {
+    return (b.lo_x.capacity() + b.lo_y.capacity() + b.lo_z.capacity() + b.hi_x.capacity() +
+            b.hi_y.capacity() + b.hi_z.capacity()) *
+           sizeof(double);
+  };
+  const std::size_t cull_bytes =
+      (cull.index_a.capacity() + cull.index_b.capacity() + cull.keep.capacity()) * sizeof(int) +
+      (cull.lo_x.capacity() + cull.lo_y.capacity() + cull.lo_z.capacity() + cull.hi_x.capacity() +
+       cull.hi_y.capacity() + cull.hi_z.capacity()) *
+          sizeof(double);
+  return boxes(boxes_a) + boxes(boxes_b) + cull_bytes + pairs.capacity() * sizeof(TrianglePairIndex) +
+         results.capacity() * sizeof(TrianglePairDistance);
+}
 
-// Scratch reused across calls on the same thread, so that a call allocates nothing once
-// the buffers have grown. Holds no state that outlives a call. `pairs` only grows (its
-// first `count` entries are this call's), so it is not re-initialised on every call.
-struct Workspace {
-  TriangleBoxes boxes_a, boxes_b;
-  CullScratch cull;
-  std::vector<TrianglePairIndex> pairs;
-  std::vector<TrianglePairDistance> results;
-};
+namespace {
 
 // Fills ws.pairs[0, count) with the candidate pairs in row-major order; returns count.
 // Culling: each triangle box computed once per call; the two-stage cull of
 // triangle_boxes.h (keeps exactly the pairs of the full box cull).
 int collect_candidates(const TriangleSoA &a, const TriangleSoA &b, double margin, bool cull,
-                       Workspace &ws) {
+                       ContactWorkspace &ws) {
   const int na = a.num_triangles(), nb = b.num_triangles();
   const long long all = static_cast<long long>(na) * nb;
   if (!cull && all <= kMaxUnculledPairs) {
@@ -80,12 +85,11 @@ void run_kernel(const TriangleSoA &a, const TriangleSoA &b, const ContactOptions
 
 void find_triangle_contacts(const TriangleSoA &a, double eps_a, const TriangleSoA &b, double eps_b,
                             const ContactOptions &opt, std::vector<TriangleContact> &out,
-                            ContactStats &stats) {
+                            ContactStats &stats, ContactWorkspace &ws) {
   if (!penalty_iterations_supported(opt.newton_iterations))
     throw std::invalid_argument("find_triangle_contacts: unsupported newton_iterations");
   if (opt.batch_size < 1)
     throw std::invalid_argument("find_triangle_contacts: batch_size must be >= 1");
-  static thread_local Workspace ws;
   const double cutoff = eps_a + eps_b;
   const int count = collect_candidates(a, b, cutoff, opt.cull, ws);
   stats.triangle_pairs_tested += count;
@@ -144,7 +148,7 @@ void find_triangle_contacts(const TriangleSoA &a, double eps_a, const TriangleSo
     break;
   }
   }
-  add_penalty_counters(stats, counters);
+  static_cast<HybridCounters &>(stats) += counters;
 
   for (int k = 0; k < count; ++k) {
     const TrianglePairDistance &r = results[k];
@@ -154,6 +158,13 @@ void find_triangle_contacts(const TriangleSoA &a, double eps_a, const TriangleSo
                    r.intersecting, r.penetration_depth});
     ++stats.contacts;
   }
+}
+
+void find_triangle_contacts(const TriangleSoA &a, double eps_a, const TriangleSoA &b, double eps_b,
+                            const ContactOptions &opt, std::vector<TriangleContact> &out,
+                            ContactStats &stats) {
+  ContactWorkspace ws;
+  find_triangle_contacts(a, eps_a, b, eps_b, opt, out, stats, ws);
 }
 
 } // namespace tri

@@ -18,7 +18,9 @@
 // parallelise over particle pairs pass ContactParallelism::None.
 #pragma once
 
+#include "distance_kernels.h"
 #include "penalty_distance.h"
+#include "triangle_boxes.h"
 #include "triangle_soa.h"
 
 #include <Eigen/Core>
@@ -67,23 +69,37 @@ struct TriangleContact {            // one triangle pair closer than eps_a + eps
                             // separates the triangles; 0 otherwise
 };
 
-struct ContactStats { // values for one or more calls, summed by the caller; no globals
+// Values for one or more calls, summed by the caller; no globals. The penalty counters
+// (penalty_pairs, fallbacks, newton_histogram) are the distance kernels' own (HybridCounters);
+// what compute tri/stats reports of them is listed in interaction_tally.h.
+struct ContactStats : HybridCounters {
   long long triangle_pairs_tested = 0; // pairs given to the distance kernel
   long long triangle_pairs_culled = 0; // pairs removed by the box cull
   long long contacts = 0;              // pairs reported
-  long long penalty_pairs = 0;         // pairs run through the penalty iteration
-  long long fallbacks = 0;             // pairs recomputed by brute force (hybrid kernels)
-  // newton_histogram[k], k = 1..kMaxPenaltyIterations: penalty pairs whose k-th Newton step
-  // was the first shorter than the tolerance (s |dz|, length); [0]: none was, within
-  // newton_iterations. The paper's Fig. 2 (left) when newton_iterations is large.
-  long long newton_histogram[kMaxPenaltyIterations + 1] = {};
 
   ContactStats &operator+=(const ContactStats &o);
+};
+
+// Scratch of find_triangle_contacts, owned by the caller (one per thread), so that a call
+// allocates nothing once the buffers have grown. Holds no state that outlives a call.
+// `pairs` only grows (its first `count` entries are a call's), so it is not re-initialised.
+struct ContactWorkspace {
+  TriangleBoxes boxes_a, boxes_b;
+  CullScratch cull;
+  std::vector<TrianglePairIndex> pairs;
+  std::vector<TrianglePairDistance> results;
+
+  std::size_t bytes() const; // heap memory held
 };
 
 // Appends to `out` every triangle pair of a and b with distance < eps_a + eps_b, sorted by
 // (tri_a, tri_b) so results do not depend on thread count; adds to `stats`.
 // Throws std::invalid_argument for an unsupported newton_iterations or batch_size < 1.
+void find_triangle_contacts(const TriangleSoA &a, double eps_a, const TriangleSoA &b, double eps_b,
+                            const ContactOptions &opt, std::vector<TriangleContact> &out,
+                            ContactStats &stats, ContactWorkspace &ws);
+
+// The same with a workspace of its own (allocates on every call: tests, tools, one-off uses).
 void find_triangle_contacts(const TriangleSoA &a, double eps_a, const TriangleSoA &b, double eps_b,
                             const ContactOptions &opt, std::vector<TriangleContact> &out,
                             ContactStats &stats);

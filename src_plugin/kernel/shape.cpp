@@ -137,15 +137,17 @@ Shape make_shape(std::string name, TriangleMesh mesh) {
     r2 = std::max(r2, p.squaredNorm());
   shape.bounding_radius = std::sqrt(r2);
 
-  double e2_min = std::numeric_limits<double>::infinity(), e2_max = 0.0;
+  double e2_min = std::numeric_limits<double>::infinity(), e2_max = 0.0, sum = 0.0;
   for (int t = 0; t < shape.mesh.num_triangles(); ++t)
     for (int k = 0; k < 3; ++k) {
       const double e2 = (shape.mesh.corner(t, (k + 1) % 3) - shape.mesh.corner(t, k)).squaredNorm();
       e2_min = std::min(e2_min, e2);
       e2_max = std::max(e2_max, e2);
+      sum += (shape.mesh.corner(t, k) - shape.mesh.corner(t, (k + 1) % 3)).norm();
     }
   shape.min_edge_length = std::sqrt(e2_min);
   shape.max_edge_length = std::sqrt(e2_max);
+  shape.mean_edge_length = sum / (3.0 * shape.mesh.num_triangles());
 
   shape.convex = is_convex(shape.mesh, kConvexityTolerance * 2.0 * shape.bounding_radius);
   return shape;

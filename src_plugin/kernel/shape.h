@@ -32,6 +32,8 @@ struct Shape {
   double bounding_radius = 0.0; // max vertex distance from the centre of mass, m
   double min_edge_length = 0.0; // shortest triangle edge, m
   double max_edge_length = 0.0; // longest triangle edge, m (sets the contact-patch link length)
+  double mean_edge_length = 0.0; // mean over the 3 edges of every triangle, m (the mesh's
+                                 // resolution against the soft layer: fix tri/particles)
   bool convex = false;          // every vertex on or behind every face plane (kConvexityTolerance)
 };
 

@@ -1,9 +1,8 @@
 #include "approach_speed.h"
 
-#include "pair_tri_gran.h"
+#include "contact_board.h"
 
 #include "atom.h"
-#include "force.h"
 #include "lammps.h"
 #include "neigh_list.h"
 #include "neighbor.h"
@@ -34,12 +33,11 @@ PairGeometry geometry(const LAMMPS_NS::Atom *atom, int i, int j) {
   return g;
 }
 
-// Calls f(i, j) for every pair of pair tri/gran's list; false if there is no such list.
-template <class F> bool for_each_listed_pair(LAMMPS_NS::LAMMPS *lmp, F f) {
-  auto *pair = dynamic_cast<LAMMPS_NS::PairTriGran *>(lmp->force->pair);
-  if (!pair || !pair->list || !pair->list->ilist)
+// Calls f(i, j) for every pair of the list published on the board; false if there is none.
+template <class F> bool for_each_listed_pair(const ContactBoard &board, F f) {
+  const LAMMPS_NS::NeighList *list = board.particle_pairs();
+  if (!list || !list->ilist)
     return false;
-  const LAMMPS_NS::NeighList *list = pair->list;
   for (int ii = 0; ii < list->inum; ++ii) {
     const int i = list->ilist[ii];
     const int *jlist = list->firstneigh[i];
@@ -51,11 +49,11 @@ template <class F> bool for_each_listed_pair(LAMMPS_NS::LAMMPS *lmp, F f) {
 
 } // namespace
 
-PairApproach pair_dt_limit(LAMMPS_NS::LAMMPS *lmp, double depth) {
+PairApproach pair_dt_limit(LAMMPS_NS::LAMMPS *lmp, const ContactBoard &board, double depth) {
   PairApproach out;
   out.dt_limit = std::numeric_limits<double>::infinity();
   const LAMMPS_NS::Atom *atom = lmp->atom;
-  for_each_listed_pair(lmp, [&](int i, int j) {
+  for_each_listed_pair(board, [&](int i, int j) {
     const PairGeometry g = geometry(atom, i, j);
     const double closing = std::max(g.normal_speed, 0.0) + g.spin_speed;
     if (!(closing > 0.0))
@@ -77,10 +75,10 @@ PairApproach pair_dt_limit(LAMMPS_NS::LAMMPS *lmp, double depth) {
   return out;
 }
 
-FastestPair fastest_pair_within_reach(LAMMPS_NS::LAMMPS *lmp) {
+FastestPair fastest_pair_within_reach(LAMMPS_NS::LAMMPS *lmp, const ContactBoard &board) {
   FastestPair out;
   const LAMMPS_NS::Atom *atom = lmp->atom;
-  for_each_listed_pair(lmp, [&](int i, int j) {
+  for_each_listed_pair(board, [&](int i, int j) {
     const PairGeometry g = geometry(atom, i, j);
     if (g.gap < 0.0 && g.normal_speed > out.normal_speed) {
       out.normal_speed = g.normal_speed;

@@ -1,4 +1,5 @@
-// How fast particles close in on each other, from pair tri/gran's neighbour list (every pair
+// How fast particles close in on each other, from the particle-pair neighbour list that the
+// contact board holds (contact_board.h: published by pair tri/gran; every pair
 // whose bounding spheres, radius = bounding radius + epsilon, are within the neighbour skin).
 // Read by fix tri/adapt_dt (to bound dt before a step) and fix tri/particles (to recognise a
 // step that carried a pair through its soft layers). Local to this rank: with `newton off`,
@@ -16,6 +17,8 @@ class LAMMPS;
 
 namespace tri_liggghts {
 
+class ContactBoard;
+
 struct PairApproach {
   // Largest step (s) that keeps every listed pair from advancing more than `depth` (m) into
   // the region where its soft layers may touch: a pair at gap g > 0 closing at normal speed
@@ -25,9 +28,8 @@ struct PairApproach {
   long tag_i = 0, tag_j = 0;
 };
 
-// Pairs of pair tri/gran's list on this rank (none without pair tri/gran or before its list
-// exists).
-PairApproach pair_dt_limit(LAMMPS_NS::LAMMPS *lmp, double depth);
+// Pairs of the board's particle-pair list on this rank (none before a list is published).
+PairApproach pair_dt_limit(LAMMPS_NS::LAMMPS *lmp, const ContactBoard &board, double depth);
 
 struct FastestPair {
   double normal_speed = 0.0; // m/s, largest among pairs within reach (gap < 0)
@@ -36,7 +38,7 @@ struct FastestPair {
 
 // The pair within reach whose centres approach fastest on this rank (normal speed only: a
 // spinning pair that is being pushed apart is not approaching).
-FastestPair fastest_pair_within_reach(LAMMPS_NS::LAMMPS *lmp);
+FastestPair fastest_pair_within_reach(LAMMPS_NS::LAMMPS *lmp, const ContactBoard &board);
 
 struct FastestParticle {
   double speed = 0.0; // |v| + |omega| * radius, m/s

@@ -1,17 +1,15 @@
 #include "compute_tri_stats.h"
 
+#include "fix_tri_particles.h"
+
 #include "error.h"
+#include "modify.h"
 #include "update.h"
 
 #include <cmath>
 #include <string>
 
 using namespace LAMMPS_NS;
-
-namespace {
-constexpr int kFixed = 11;
-constexpr int kLength = kFixed + tri::kMaxPenaltyIterations + 1;
-} // namespace
 
 ComputeTriStats::ComputeTriStats(LAMMPS *lmp, int &iarg, int narg, char **arg)
     : Compute(lmp, iarg, narg, arg) {
@@ -31,36 +29,30 @@ ComputeTriStats::ComputeTriStats(LAMMPS *lmp, int &iarg, int narg, char **arg)
     error->all(FLERR, msg.c_str());
   }
   vector_flag = 1;
-  size_vector = kLength;
+  size_vector = static_cast<int>(tri::stats_columns().size());
   extvector = 0;
-  vector = new double[kLength];
+  vector = new double[size_vector];
 }
 
 ComputeTriStats::~ComputeTriStats() { delete[] vector; }
 
 void ComputeTriStats::init() {
-  const tri_liggghts::GlobalTally g = tri_liggghts::global_tally(lmp);
-  if (!g.have_pair && g.walls == 0)
+  particles_ = static_cast<FixTriParticles *>(modify->find_fix_style("tri/particles", 0));
+  if (!particles_)
+    error->all(FLERR, "Compute tri/stats requires fix tri/particles");
+  const tri_liggghts::ContactBoard &board = particles_->board();
+  if (board.sources(tri_liggghts::SourceKind::particle_pairs) +
+          board.sources(tri_liggghts::SourceKind::walls) ==
+      0)
     error->all(FLERR, "Compute tri/stats requires pair_style tri/gran or fix tri/wall");
 }
 
 void ComputeTriStats::compute_vector() {
   invoked_vector = update->ntimestep;
-  const tri_liggghts::GlobalTally g = tri_liggghts::global_tally(lmp, source_);
-  const tri::InteractionTally &t = g.all;
-  const double fixed[kFixed] = {double(t.body_pairs_checked),
-                                double(t.body_pairs_in_contact),
-                                double(t.distance.triangle_pairs_tested),
-                                double(t.distance.triangle_pairs_culled),
-                                double(t.contacts_before),
-                                double(t.contacts_after),
-                                double(t.distance.fallbacks),
-                                double(t.distance.penalty_pairs),
-                                double(t.penetrations),
-                                t.max_overlap,
-                                std::isfinite(t.min_distance) ? t.min_distance : 0.0};
-  for (int k = 0; k < kFixed; ++k)
-    vector[k] = fixed[k];
-  for (int k = 0; k <= tri::kMaxPenaltyIterations; ++k)
-    vector[kFixed + k] = double(t.distance.newton_histogram[k]);
+  const tri::InteractionTally t = tri_liggghts::global_tally(particles_->board(), world, source_);
+  const std::vector<tri::StatColumn> &columns = tri::stats_columns();
+  for (std::size_t k = 0; k < columns.size(); ++k) {
+    const double v = columns[k].value(t);
+    vector[k] = std::isfinite(v) ? v : 0.0; // the closest distance when nothing was tested
+  }
 }

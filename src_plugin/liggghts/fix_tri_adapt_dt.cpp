@@ -75,9 +75,6 @@ void FixTriAdaptDt::init() {
   particles_ = static_cast<FixTriParticles *>(modify->find_fix_style("tri/particles", 0));
   if (!particles_)
     error->all(FLERR, "Fix tri/adapt_dt requires fix tri/particles");
-  const tri_liggghts::GlobalTally g = tri_liggghts::global_tally(lmp);
-  if (!g.have_pair && g.walls == 0)
-    error->all(FLERR, "Fix tri/adapt_dt requires pair_style tri/gran or fix tri/wall");
   if (update->dt > dtmax_ || update->dt < dtmin_)
     set_dt(std::min(std::max(update->dt, dtmin_), dtmax_), "outside [dtmin, dtmax]");
 }
@@ -104,7 +101,7 @@ void FixTriAdaptDt::set_dt(double dt, const char *why) {
 
 double FixTriAdaptDt::approach_limit(double dt, std::string &why) const {
   const tri_liggghts::PairApproach pairs =
-      tri_liggghts::pair_dt_limit(lmp, approach_ * particles_->epsilon());
+      tri_liggghts::pair_dt_limit(lmp, particles_->board(), approach_ * particles_->epsilon());
   const tri_liggghts::FastestParticle fastest = tri_liggghts::fastest_particle(lmp);
   const double skin_limit = fastest.speed > 0.0 ? 0.5 * neighbor->skin / fastest.speed
                                                 : std::numeric_limits<double>::infinity();
@@ -139,6 +136,12 @@ double FixTriAdaptDt::approach_limit(double dt, std::string &why) const {
 
 // Before the first step, so that particles launched at each other start with a bounded dt.
 void FixTriAdaptDt::setup(int) {
+  // Here, not in init(): a fix tri/wall defined after this fix joins the board in its init().
+  const tri_liggghts::ContactBoard &board = particles_->board();
+  if (board.sources(tri_liggghts::SourceKind::particle_pairs) +
+          board.sources(tri_liggghts::SourceKind::walls) ==
+      0)
+    error->all(FLERR, "Fix tri/adapt_dt requires pair_style tri/gran or fix tri/wall");
   std::string why;
   const double limit = approach_limit(update->dt, why);
   if (limit < update->dt && update->dt > dtmin_) {
@@ -148,7 +151,7 @@ void FixTriAdaptDt::setup(int) {
 }
 
 void FixTriAdaptDt::end_of_step() {
-  const tri::InteractionTally t = tri_liggghts::global_tally(lmp).all;
+  const tri::InteractionTally t = tri_liggghts::global_tally(particles_->board(), world);
   double dt = update->dt;
   enum { keep, halve, grow } rule = keep;
   if (t.contacts_after > 0 && t.min_distance < fraction_ * particles_->epsilon()) {

@@ -1,30 +1,19 @@
 #include "fix_tri_particles.h"
 
-#include "approach_speed.h"
-#include "fix_tri_wall.h"
-#include "pair_tri_gran.h"
 #include "particle_options.h"
-#include "step_tally.h"
+#include "shape_builder.h"
 
-#include "mesh_reader.h"
-#include "particle_contacts.h"
-#include "random_rock.h"
 #include "rigid_body.h"
 #include "seeded_random.h"
-#include "shape_error.h"
 
 #include "peratom_restart.h"
 
 #include "atom.h"
 #include "comm.h"
-#include "domain.h"
 #include "error.h"
-#include "force.h"
 #include "group.h"
 #include "memory.h"
 #include "modify.h"
-#include "neigh_list.h"
-#include "pair.h"
 #include "update.h"
 
 #include <algorithm>
@@ -46,26 +35,6 @@ constexpr int kShape = 0, kQuat = 1, kAngmom = 5;
 // pending_ columns
 constexpr int kForce = 0, kTorque = 3, kFlag = 6;
 constexpr double kUnset = -1.0;
-
-tri::Shape build_shape(const tri_liggghts::ShapeSpec &spec) {
-  if (spec.from_file) {
-    tri::TriangleMesh mesh = tri::read_mesh_file(spec.path);
-    if (spec.scale != 1.0)
-      mesh = tri::scaled(std::move(mesh), spec.scale);
-    try {
-      return tri::make_shape(spec.name, std::move(mesh));
-    } catch (const tri::ShapeError &e) {
-      throw tri::ShapeError(spec.path + ": " + e.what());
-    }
-  }
-  tri::RockParameters rock;
-  rock.ntri = spec.ntri;
-  rock.size = spec.size;
-  rock.seed = spec.seed;
-  rock.aspect_middle = spec.aspect_middle;
-  rock.aspect_short = spec.aspect_short;
-  return tri::make_shape(spec.name, tri::random_rock(rock));
-}
 
 } // namespace
 
@@ -89,58 +58,8 @@ FixTriParticles::FixTriParticles(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, n
   orient_random_ = opt.orient_random;
   orient_seed_ = opt.orient_seed;
 
-  for (const tri_liggghts::ShapeSpec &spec : opt.shapes) {
-    try {
-      shapes_.push_back(build_shape(spec));
-    } catch (const tri::ShapeError &e) { // already names the shape (and the file)
-      const std::string msg = std::string("Fix tri/particles: ") + e.what();
-      error->all(FLERR, msg.c_str());
-    } catch (const std::exception &e) { // a mesh file error names the file
-      const std::string msg = "Fix tri/particles: shape '" + spec.name + "': " + e.what();
-      error->all(FLERR, msg.c_str());
-    }
-  }
-  if (assign_by_type_ && num_shapes() < atom->ntypes) {
-    const std::string msg = "Fix tri/particles: 'assign type' needs one shape per atom type (" +
-                            std::to_string(atom->ntypes) + " types, " +
-                            std::to_string(num_shapes()) + " shapes)";
-    error->all(FLERR, msg.c_str());
-  }
-  // A particle wider than the box in a periodic direction would touch its own image.
-  for (const tri::Shape &s : shapes_) {
-    const double diameter = 2.0 * (s.bounding_radius + epsilon_);
-    const double box_min = std::min({domain->xprd, domain->yprd, domain->zprd});
-    if (domain->box_exist && diameter >= box_min) {
-      const std::string msg = "Fix tri/particles: shape " + s.name + " (bounding diameter " +
-                              std::to_string(diameter) + " m with epsilon) does not fit in the "
-                              "simulation box (smallest side " + std::to_string(box_min) + " m)";
-      error->all(FLERR, msg.c_str());
-    }
-  }
-
-  // Triangles finer than the soft layer: a point of one surface is within the layers of
-  // ~30 (eps / edge)^2 triangles of the other, so the triangle pairs of one contact, and the
-  // work to reduce them, grow with (eps / edge)^4 (measured: two 4 mm cubes face to face,
-  // 0.45 s per step at edge = 2 epsilon, 16 s at edge = epsilon).
-  for (const tri::Shape &s : shapes_) {
-    const tri::TriangleSoA &t = s.soa;
-    double sum = 0.0;
-    for (int k = 0; k < t.num_triangles(); ++k)
-      for (int e = 0; e < 3; ++e)
-        sum += (t.vertex(k, e) - t.vertex(k, (e + 1) % 3)).norm();
-    const double mean_edge = sum / (3.0 * t.num_triangles());
-    if (mean_edge < epsilon_) {
-      const double fits = t.num_triangles() * (mean_edge / epsilon_) * (mean_edge / epsilon_);
-      char msg[500];
-      std::snprintf(msg, sizeof msg,
-                    "Fix tri/particles: shape %s (%d triangles) has a mean edge length of %g m, "
-                    "shorter than epsilon (%g m): one contact would hold thousands of "
-                    "triangle pairs and cost seconds per step; use a coarser mesh (about %.0f "
-                    "triangles or fewer) or a smaller epsilon",
-                    s.name.c_str(), t.num_triangles(), mean_edge, epsilon_, std::floor(fits));
-      error->all(FLERR, msg);
-    }
-  }
+  shapes_ = tri_liggghts::build_shapes(lmp, opt);
+  monitor_ = std::make_unique<tri_liggghts::RunSafetyMonitor>(lmp, epsilon_);
 
   peratom_flag = 1;
   size_peratom_cols = kValues;
@@ -172,136 +91,14 @@ FixTriParticles::~FixTriParticles() {
 
 int FixTriParticles::setmask() { return PRE_FORCE | POST_FORCE | END_OF_STEP; }
 
-// After the pair forces, before the second half-kick: v is still the velocity that carried
-// the particles into this step's positions. A pair within reach that this step brought more
-// than epsilon closer, while there are contacts on this rank (it is in contact, or about to
-// be), cannot be resolved by the soft layer. Local: with newton off every pair is seen whole
-// on each rank that owns one of its particles. Reported in end_of_step.
-void FixTriParticles::post_force(int) {
-  unresolved_ = Unresolved{};
-  auto *pair = dynamic_cast<PairTriGran *>(force->pair);
-  if (!pair || pair->tally().contacts_after == 0)
-    return;
-  const tri_liggghts::FastestPair p = tri_liggghts::fastest_pair_within_reach(lmp);
-  unresolved_.step = p.normal_speed * update->dt;
-  unresolved_.speed = p.normal_speed;
-  unresolved_.tag_i = p.tag_i;
-  unresolved_.tag_j = p.tag_j;
-}
+void FixTriParticles::post_force(int) { monitor_->after_pair_forces(board_); }
 
 // After every fix tri/wall has added its forces.
-void FixTriParticles::end_of_step() {
-  // Not after read_restart: intersections then come from the dynamics, not from set-up.
-  if (!overlaps_checked_ && update->ntimestep == update->firststep + 1) {
-    overlaps_checked_ = true;
-    check_initial_overlaps();
-  }
-  find_unresolved_wall_contact();
-  report_unresolved_contacts();
-}
+void FixTriParticles::end_of_step() { monitor_->end_of_step(board_); }
 
-// Particles created inside each other or a wall. A shallow intersection is pushed apart, but
-// past about the soft-layer width the triangle contacts of a deep one point every way and
-// their forces can cancel, leaving the particles stuck inside each other, so the first step
-// of the first run stops instead. Names one pair (found again with the distance kernel, which
-// costs nothing as this path runs once).
-void FixTriParticles::check_initial_overlaps() {
-  const tri_liggghts::GlobalTally pair = global_tally(lmp, tri_liggghts::TallySource::pair);
-  const tri_liggghts::GlobalTally wall = global_tally(lmp, tri_liggghts::TallySource::wall);
-  if (pair.all.penetrations + wall.all.penetrations == 0)
-    return;
-  double tags[2] = {0.0, 0.0};
-  if (pair.all.penetrations > 0 && force->pair && force->pair->list) {
-    const NeighList *list = force->pair->list;
-    std::vector<tri::TriangleContact> contacts;
-    for (int ii = 0; ii < list->inum && tags[0] == 0.0; ++ii) {
-      const int i = list->ilist[ii];
-      for (int jj = 0; jj < list->numneigh[i] && tags[0] == 0.0; ++jj) {
-        const int j = list->firstneigh[i][jj] & NEIGHMASK;
-        contacts.clear();
-        tri::ContactStats stats;
-        tri::find_triangle_contacts(world_[i], epsilon_, world_[j], epsilon_,
-                                    tri::ContactOptions{}, contacts, stats);
-        for (const tri::TriangleContact &c : contacts)
-          if (c.intersecting) {
-            tags[0] = std::min(atom->tag[i], atom->tag[j]);
-            tags[1] = std::max(atom->tag[i], atom->tag[j]);
-            break;
-          }
-      }
-    }
-  }
-  double found[2];
-  MPI_Allreduce(tags, found, 2, MPI_DOUBLE, MPI_MAX, world);
-  char example[80] = "";
-  if (found[0] > 0.0)
-    std::snprintf(example, sizeof example, ", e.g. particles %.0f and %.0f", found[0], found[1]);
-  char msg[600];
-  std::snprintf(msg, sizeof msg,
-                "Fix tri/particles: the run starts with intersecting surfaces (%lld particle "
-                "pair(s)%s; %lld particle-wall contact(s)): particles created inside each other "
-                "or inside a wall cannot be pushed apart reliably (the contact force acts in "
-                "the soft layers); create them at least 2 x epsilon apart",
-                pair.all.penetrations, example, wall.all.penetrations);
-  error->all(FLERR, msg);
-}
-
-// Walls: a wall's direction is not known here, so only once real surfaces intersect, and only
-// a particle that moves against its force (approaching; one pushed out of a wall moves with
-// it). Kept only if it moves farther per step than the pair found in post_force.
-void FixTriParticles::find_unresolved_wall_contact() {
-  long long hits = 0;
-  for (int k = 0; k < modify->nfix; ++k)
-    if (std::strcmp(modify->fix[k]->style, "tri/wall") == 0)
-      hits += static_cast<FixTriWall *>(modify->fix[k])->tally().penetrations;
-  if (hits == 0)
-    return;
-  double **v = atom->v, **f = atom->f;
-  for (int i = 0; i < atom->nlocal; ++i) {
-    const double speed = std::sqrt(v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2]);
-    const double along_force = v[i][0] * f[i][0] + v[i][1] * f[i][1] + v[i][2] * f[i][2];
-    if (along_force < 0.0 && speed * update->dt > unresolved_.step) {
-      unresolved_.step = speed * update->dt;
-      unresolved_.speed = speed;
-      unresolved_.tag_i = atom->tag[i];
-      unresolved_.tag_j = 0;
-    }
-  }
-}
-
-// error->one would abort without flushing the screen (the message is lost in a pipe), so the
-// ranks agree first and stop together with error->all.
-void FixTriParticles::report_unresolved_contacts() {
-  struct {
-    double step;
-    int rank;
-  } mine{unresolved_.step, comm->me}, worst;
-  MPI_Allreduce(&mine, &worst, 1, MPI_DOUBLE_INT, MPI_MAXLOC, world);
-  if (!(worst.step > epsilon_))
-    return;
-  double info[3] = {unresolved_.speed, double(unresolved_.tag_i), double(unresolved_.tag_j)};
-  MPI_Bcast(info, 3, MPI_DOUBLE, worst.rank, world);
-  const double dt = update->dt;
-  const char *advice = modify->find_fix_style("tri/adapt_dt", 0)
-                           ? "lower dtmin of fix tri/adapt_dt"
-                           : "use a smaller timestep or fix tri/adapt_dt";
-  char msg[600];
-  if (info[2] > 0.0)
-    std::snprintf(msg, sizeof msg,
-                  "Fix tri/particles: step " BIGINT_FORMAT ": particles %.0f and %.0f meet at "
-                  "%g m/s, %g m per time step of %g s, more than epsilon (%g m): the soft layer "
-                  "cannot resolve such a contact and particles may pass through each other; %s",
-                  update->ntimestep, info[1], info[2], info[0], info[0] * dt, dt, epsilon_,
-                  advice);
-  else
-    std::snprintf(msg, sizeof msg,
-                  "Fix tri/particles: step " BIGINT_FORMAT ": particle %.0f moves at %g m/s "
-                  "against its contact force, %g m per time step of %g s, more than epsilon "
-                  "(%g m), and a particle-wall contact has intersecting surfaces: the soft layer "
-                  "cannot resolve such a contact and particles may pass through walls; %s",
-                  update->ntimestep, info[1], info[0], info[0] * dt, dt, epsilon_, advice);
-  error->all(FLERR, msg);
-}
+// A source removed between runs (unfix, another pair_style) leaves nothing behind; the
+// sources of the next run join again in their init().
+void FixTriParticles::post_run() { board_.clear_sources(); }
 
 void FixTriParticles::initialise_atom(int i) {
   const auto tag = static_cast<std::uint64_t>(atom->tag[i]);
@@ -352,6 +149,7 @@ void FixTriParticles::pre_force(int) {
   initialise_unset_atoms();
   comm->forward_comm_fix(this);
   update_world_triangles(atom->nlocal + atom->nghost);
+  board_.clear_tallies(); // this force evaluation's sources publish next
 }
 
 void FixTriParticles::update_world_triangles(int n) {
@@ -539,7 +337,7 @@ void FixTriParticles::write_restart(FILE *fp) {
 }
 
 void FixTriParticles::restart(char *buf) {
-  overlaps_checked_ = true;
+  monitor_->skip_initial_check();
   const double *data = reinterpret_cast<const double *>(buf);
   const double f = shape_fingerprint();
   if (std::fabs(data[0] - f) > 1e-9 * std::fabs(f))

@@ -6,12 +6,10 @@
 // soft layers can touch) and rmass := density * volume. Each step (pre_force) it rebuilds
 // the world-frame triangles of owned and ghost atoms for the contact styles and the output.
 //
-// Checks (post_force, end_of_step): on the first step of the first run (not after
-// read_restart), an error if real surfaces intersect (particles created inside each other or
-// inside a wall). On every step, an error if, while there are contacts, a pair within reach
-// approaches by more than epsilon per step (or, once a particle-wall contact has intersecting
-// surfaces, a particle moves more than epsilon per step against its force): the time step is
-// too large for the soft layer, and particles would pass through each other.
+// Shapes are built by shape_builder.h. It owns the contact board (contact_board.h) on which
+// the contact styles publish their tallies, and the run-safety checks (run_safety_monitor.h:
+// intersections at the start, steps too long for the soft layer) that read it in post_force
+// and end_of_step.
 //
 // The per-atom array is visible to dumps as f_ID[1..8]: shape index, quaternion w x y z
 // (body principal frame -> space), angular momentum Lx Ly Lz (space frame, kg m^2/s).
@@ -20,11 +18,14 @@
 #include "fix.h"
 
 #include "body_interaction.h"
+#include "contact_board.h"
+#include "run_safety_monitor.h"
 #include "shape.h"
 #include "triangle_soa.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <memory>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -45,6 +46,7 @@ public:
   void pre_force(int) override;
   void post_force(int) override;
   void end_of_step() override;
+  void post_run() override;
 
   void grow_arrays(int) override;
   void copy_arrays(int, int, int) override;
@@ -82,6 +84,8 @@ public:
   // Principal moments of atom i, kg m^2, scaled with its rmass (so `set mass` stays consistent).
   Eigen::Vector3d principal_inertia(int i) const;
   double epsilon() const { return epsilon_; }
+  // Where the contact styles publish, and their readers read (contact_board.h).
+  tri_liggghts::ContactBoard &board() { return board_; }
   // World-frame triangles of owned and ghost atom i, as of the last pre_force.
   const tri::TriangleSoA &world_triangles(int i) const { return world_[i]; }
   // Atom i (owned or ghost) as the contact kernel sees it: its world-frame triangles, soft
@@ -99,15 +103,8 @@ private:
   double **state_ = nullptr;
   double **pending_ = nullptr; // per atom: f(3), torque(3), flag
 
-  bool overlaps_checked_ = false;
-  void check_initial_overlaps();
-  // The pair (tag_j > 0) or particle that moved farthest towards a contact this step.
-  struct Unresolved {
-    double step = 0.0, speed = 0.0; // m per step, m/s
-    long tag_i = 0, tag_j = 0;
-  } unresolved_;
-  void find_unresolved_wall_contact();
-  void report_unresolved_contacts();
+  tri_liggghts::ContactBoard board_;
+  std::unique_ptr<tri_liggghts::RunSafetyMonitor> monitor_;
   void initialise_atom(int i);
   int initialise_unset_atoms();
   void apply_mass_and_radius(int i);

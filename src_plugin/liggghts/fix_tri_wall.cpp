@@ -3,6 +3,7 @@
 #include "fix_tri_particles.h"
 
 #include "peratom_restart.h"
+#include "rigid_motion.h"
 
 #include "atom.h"
 #include "error.h"
@@ -13,8 +14,6 @@
 #include "neighbor.h"
 #include "tri_mesh.h"
 #include "update.h"
-
-#include <omp.h>
 
 #include <algorithm>
 #include <cstring>
@@ -111,6 +110,7 @@ void FixTriWall::init() {
   for (int s = 0; s < particles_->num_shapes(); ++s)
     rmin = std::min(rmin, particles_->shape(s).bounding_radius + particles_->epsilon());
   neighbor->register_contact_dist_factor(1.0 + epsilon_ / rmin);
+  board_slot_ = particles_->board().join(id, tri_liggghts::SourceKind::walls);
 }
 
 void FixTriWall::setup(int) { compute(false); }
@@ -155,86 +155,84 @@ void FixTriWall::collect_tasks() {
   }
 }
 
-void FixTriWall::interact(int k, int thread, double dt, bool update_history) {
+tri::PairForceResult FixTriWall::interact(int k, double dt, bool update_history,
+                                          tri::InteractionScratch &scratch,
+                                          tri::ContactStats &stats) {
   const Task &task = tasks_[k];
   const int a = task.atom;
   FixMeshSurface *fix_mesh = meshes_[task.mesh];
   TriMesh *mesh = fix_mesh->triMesh();
 
   tri::TriangleSoA &patch = patches_[k];
-  patch.resize(static_cast<int>(task.triangles.size()));
+  const int n = static_cast<int>(task.triangles.size());
+  patch.resize(n);
+  // Node velocities exist once a fix move/mesh moves the mesh; a static mesh has none.
   auto *vnodes = mesh->prop().getElementProperty<MultiVectorContainer<double, 3, 3>>("v");
-  Eigen::Vector3d centroid = Eigen::Vector3d::Zero(), velocity = Eigen::Vector3d::Zero();
-  for (std::size_t t = 0; t < task.triangles.size(); ++t)
+  std::vector<Eigen::Vector3d> &nodes = scratch.nodes, &node_velocities = scratch.node_velocities;
+  nodes.resize(3 * n);
+  node_velocities.assign(3 * n, Eigen::Vector3d::Zero());
+  for (int t = 0; t < n; ++t)
     for (int c = 0; c < 3; ++c) {
       double p[3];
       mesh->node(task.triangles[t], c, p);
-      patch.set_vertex(static_cast<int>(t), c, Eigen::Vector3d(p[0], p[1], p[2]));
-      centroid += Eigen::Vector3d(p[0], p[1], p[2]);
+      nodes[3 * t + c] = Eigen::Vector3d(p[0], p[1], p[2]);
+      patch.set_vertex(t, c, nodes[3 * t + c]);
       if (vnodes) {
         const double *v = vnodes->begin()[task.triangles[t]][c];
-        velocity += Eigen::Vector3d(v[0], v[1], v[2]);
+        node_velocities[3 * t + c] = Eigen::Vector3d(v[0], v[1], v[2]);
       }
     }
-  const double corners = 3.0 * static_cast<double>(task.triangles.size());
+  const tri::RigidMotion motion = tri::fit_rigid_motion(nodes.data(), node_velocities.data(), 3 * n);
 
   const tri::Body particle = particles_->body(a);
-
-  // A wall is a body of infinite mass. Its velocity is the mean of the patch's node
-  // velocities (exact for a translating mesh; for a rotating one, the patch is a
-  // particle-sized neighbourhood, so the error is of order omega_wall * particle size).
   tri::Body wall;
   wall.triangles = &patch;
   wall.epsilon = epsilon_;
   wall.longest_edge = std::numeric_limits<double>::infinity();
   wall.min_edge = particle.min_edge;
-  wall.state.x = centroid / corners;
-  wall.state.v = velocity / corners;
+  wall.state.x = motion.centre;
+  wall.state.v = motion.velocity;
+  wall.state.omega = motion.omega;
   wall.state.mass = 0.0;
 
   tri::InteractionSettings s = settings_.interaction;
   s.coefficients = materials_.get(atom->type[a], fix_mesh->atomTypeWall());
-  double *history = history_[a] + task.mesh * tri::kHistoryDoubles;
-  double scratch_history[tri::kHistoryDoubles];
-  if (!update_history) { // setup: forces without advancing the history (restarts stay exact)
-    std::memcpy(scratch_history, history, sizeof(scratch_history));
-    history = scratch_history;
-  }
-  if (s.coefficients.tangential == tri::TangentialModel::no_history)
-    history = nullptr;
-  results_[k] = tri::body_interaction(particle, wall, s, dt, history, scratch_[thread],
-                                      thread_tally_[thread].distance);
+  double *stored = s.coefficients.tangential == tri::TangentialModel::no_history
+                       ? nullptr
+                       : history_[a] + task.mesh * tri::kHistoryDoubles;
+  tri::HistoryView history(stored, false, update_history);
+  return tri::body_interaction(particle, wall, s, dt, history.data(), scratch, stats);
 }
 
 void FixTriWall::compute(bool update_history) {
   const double start = MPI_Wtime();
   collect_tasks();
-  const long ntasks = static_cast<long>(ntasks_);
-  results_.assign(ntasks_, tri::PairForceResult{});
   if (patches_.size() < ntasks_)
     patches_.resize(ntasks_);
   const int nthreads = tri_liggghts::pair_loop_threads(settings_.loop, ntasks_);
-  if (static_cast<int>(scratch_.size()) < nthreads)
-    scratch_.resize(nthreads);
-  thread_tally_.assign(nthreads, tri::InteractionTally{});
   const double dt = update->dt;
-#pragma omp parallel for schedule(dynamic, 4) num_threads(nthreads)
-  for (long k = 0; k < ntasks; ++k)
-    interact(static_cast<int>(k), omp_get_thread_num(), dt, update_history);
-
-  tally_ = tri::InteractionTally{};
-  for (const tri::InteractionTally &t : thread_tally_)
-    tally_.distance += t.distance;
-  double **f = atom->f, **torque = atom->torque;
-  for (long k = 0; k < ntasks; ++k) {
-    const tri::PairForceResult &r = results_[k];
-    tally_.add(r);
-    const int a = tasks_[k].atom;
-    for (int d = 0; d < 3; ++d) {
-      f[a][d] += r.force_a[d];
-      torque[a][d] += r.torque_a[d];
-    }
+  engine_.run(ntasks_, nthreads,
+              [&](std::size_t k, tri::InteractionScratch &scratch, tri::ContactStats &stats) {
+                return interact(static_cast<int>(k), dt, update_history, scratch, stats);
+              });
+  if (engine_.failed()) {
+    const Task &t = tasks_[engine_.failed_task()];
+    const std::string msg = std::string(kStyle) + ": the contact kernel failed on particle " +
+                            std::to_string(atom->tag[t.atom]) + " and mesh '" +
+                            mesh_ids_[t.mesh] + "': " + engine_.failure();
+    error->one(FLERR, msg.c_str()); // every rank that failed stops
   }
+  tri_liggghts::IntersectingPair first;
+  engine_.clear_contributions();
+  for (std::size_t k = 0; k < ntasks_; ++k) {
+    const tri::PairForceResult &r = engine_.result(k);
+    const int a = tasks_[k].atom;
+    if (r.intersecting && !first.found())
+      first = {atom->tag[a], 0};
+    engine_.contribute(a, tasks_[k].mesh, r.force_a, r.torque_a);
+  }
+  engine_.apply(atom->f, atom->torque);
+  particles_->board().publish(board_slot_, engine_.tally(), first);
   seconds_ += MPI_Wtime() - start;
 }
 
@@ -278,5 +276,5 @@ double FixTriWall::memory_usage() {
     bytes += 3.0 * patch.x.capacity() * sizeof(double);
   for (const Task &task : tasks_)
     bytes += task.triangles.capacity() * sizeof(int);
-  return bytes;
+  return bytes + static_cast<double>(engine_.bytes());
 }

@@ -7,6 +7,12 @@
 //
 //   fix ID group tri/wall mesh MESH_ID [MESH_ID ...] [epsilon E] [contact keywords]
 //
+// A wall patch is a body of infinite mass moving as the mesh moves: its rigid velocity field is
+// fitted to the node velocities of the patch (tri/rigid_motion.h), exact for move/mesh's rigid
+// motions, so a particle on a rotating drum is carried at the drum's surface velocity. The
+// loop, scratch, errors and ordered sums are tri::InteractionEngine's, as for pair tri/gran;
+// the tallies go to the contact board of fix tri/particles.
+//
 // epsilon: the wall's soft layer (m), default the particles' epsilon. Contact keywords as
 // pair tri/gran (contact_settings.h). f_ID (a global scalar) is the wall-clock time spent in
 // this fix, for a run's time breakdown. The tangential history of each (particle, mesh) pair is
@@ -16,6 +22,7 @@
 #include "fix.h"
 
 #include "contact_settings.h"
+#include "interaction_engine.h"
 #include "material_table.h"
 
 #include <vector>
@@ -42,7 +49,6 @@ public:
   int maxsize_restart() override;
   double memory_usage() override;
 
-  const tri::InteractionTally &tally() const { return tally_; }
   // Wall-clock seconds this fix has spent computing forces since the fix was created (for the
   // time breakdown of a run: LIGGGHTS counts it under "Other"). f_ID in thermo.
   double compute_scalar() override { return seconds_; }
@@ -63,16 +69,15 @@ private:
   std::vector<Task> tasks_; // the first ntasks_ are this step's
   std::size_t ntasks_ = 0;
   std::vector<std::vector<std::pair<int, int>>> near_;
-  std::vector<tri::PairForceResult> results_;
   std::vector<tri::TriangleSoA> patches_;
-  std::vector<tri::InteractionScratch> scratch_;
-  std::vector<tri::InteractionTally> thread_tally_;
-  tri::InteractionTally tally_;
+  tri::InteractionEngine engine_;
+  int board_slot_ = -1;
   double seconds_ = 0.0;
 
   void compute(bool update_history);
   void collect_tasks();
-  void interact(int k, int thread, double dt, bool update_history);
+  tri::PairForceResult interact(int k, double dt, bool update_history,
+                                tri::InteractionScratch &scratch, tri::ContactStats &stats);
 };
 
 } // namespace LAMMPS_NS

@@ -10,8 +10,6 @@
 #include "neigh_list.h"
 #include "update.h"
 
-#include <omp.h>
-
 #include <algorithm>
 
 using namespace LAMMPS_NS;
@@ -46,43 +44,13 @@ void PairTriGran::init_granular() {
   if (!particles_)
     error->all(FLERR, "Pair tri/gran requires fix tri/particles (define it before the run)");
   materials_.load(lmp, atom->ntypes, settings_.interaction.coefficients, "pair tri/gran");
+  board_slot_ = particles_->board().join("pair", tri_liggghts::SourceKind::particle_pairs);
 }
 
-void PairTriGran::interact(long k, int thread, double dt, bool update_history) {
-  const Task &task = tasks_[k];
-  const int a = task.swapped ? task.j : task.i, b = task.swapped ? task.i : task.j;
-  tri::InteractionSettings s = settings_.interaction;
-  s.coefficients = materials_.get(atom->type[a], atom->type[b]);
-  // The history is stored as seen from (i, j); the kernel sees it from (a, b). Swapping the
-  // roles negates the values that flip sign, exactly, as LIGGGHTS does for the partner. During
-  // setup LIGGGHTS evaluates forces without advancing the history (shearupdate off), so a
-  // restarted run continues bit for bit: work on a copy then.
-  double scratch_history[tri::kHistoryDoubles];
-  double *history = task.history;
-  if (history && (task.swapped || !update_history)) {
-    for (int v = 0; v < tri::kHistoryDoubles; ++v)
-      scratch_history[v] =
-          task.swapped && tri::history_flips_sign(v) ? -task.history[v] : task.history[v];
-    history = scratch_history;
-  }
-  results_[k] = tri::body_interaction(particles_->body(a), particles_->body(b), s, dt, history,
-                                      scratch_[thread], thread_tally_[thread].distance);
-  if (task.history && task.swapped && update_history)
-    for (int v = 0; v < tri::kHistoryDoubles; ++v)
-      task.history[v] = tri::history_flips_sign(v) ? -scratch_history[v] : scratch_history[v];
-}
-
-void PairTriGran::compute_force(int eflag, int vflag, int) {
-  // Granular styles tally no pair energy or virial (as LIGGGHTS's own PairGran styles).
-  evflag = vflag_fdotr = 0;
-  double **f = atom->f, **torque = atom->torque;
-  const int nlocal = atom->nlocal;
-  const bool newton = force->newton_pair;
-  const double dt = update->dt;
+void PairTriGran::collect_tasks() {
   double **first_history = listgranhistory ? listgranhistory->firstdouble : nullptr;
   int **first_touch = listgranhistory ? listgranhistory->firstneigh : nullptr;
   const int dnum = this->dnum();
-
   tasks_.clear();
   for (int ii = 0; ii < list->inum; ++ii) {
     const int i = list->ilist[ii];
@@ -104,60 +72,68 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
       tasks_.push_back({i, j, atom->tag[j] < atom->tag[i], history, touching});
     }
   }
-  results_.assign(tasks_.size(), tri::PairForceResult{});
+}
+
+void PairTriGran::compute_force(int eflag, int vflag, int) {
+  // Granular styles tally no pair energy or virial (as LIGGGHTS's own PairGran styles).
+  evflag = vflag_fdotr = 0;
+  const int nlocal = atom->nlocal;
+  const bool newton = force->newton_pair;
+  const double dt = update->dt;
+  const bool update_history = shearupdate_ != 0;
+  collect_tasks();
 
   const int nthreads = tri_liggghts::pair_loop_threads(settings_.loop, tasks_.size());
-  if (static_cast<int>(scratch_.size()) < nthreads)
-    scratch_.resize(nthreads);
-  thread_tally_.assign(nthreads, tri::InteractionTally{});
-  const bool update_history = shearupdate_ != 0;
-  const long ntasks = static_cast<long>(tasks_.size());
-  if (settings_.loop == tri_liggghts::PairLoop::particle_pairs) {
-#pragma omp parallel for schedule(dynamic, 4) num_threads(nthreads)
-    for (long k = 0; k < ntasks; ++k)
-      interact(k, omp_get_thread_num(), dt, update_history);
-  } else {
-    for (long k = 0; k < ntasks; ++k)
-      interact(k, 0, dt, update_history);
-  }
+  engine_.run(tasks_.size(), nthreads,
+              [&](std::size_t k, tri::InteractionScratch &scratch, tri::ContactStats &stats) {
+                const Task &task = tasks_[k];
+                const int a = task.swapped ? task.j : task.i, b = task.swapped ? task.i : task.j;
+                tri::InteractionSettings s = settings_.interaction;
+                s.coefficients = materials_.get(atom->type[a], atom->type[b]);
+                // Stored as seen from (i, j); the kernel sees it from (a, b).
+                tri::HistoryView history(task.history, task.swapped, update_history);
+                return tri::body_interaction(particles_->body(a), particles_->body(b), s, dt,
+                                             history.data(), scratch, stats);
+              });
+  if (engine_.failed())
+    report_failure();
 
-  // One thread: the sums do not depend on the thread count.
-  tally_ = tri::InteractionTally{};
-  for (const tri::InteractionTally &t : thread_tally_)
-    tally_.distance += t.distance;
   const tagint *tag = atom->tag;
-  contributions_.clear();
-  for (long k = 0; k < ntasks; ++k) {
+  tri_liggghts::IntersectingPair first;
+  engine_.clear_contributions();
+  for (std::size_t k = 0; k < tasks_.size(); ++k) {
     const Task &t = tasks_[k];
-    const tri::PairForceResult &r = results_[k];
-    tally_.add(r);
+    const tri::PairForceResult &r = engine_.result(k);
     if (t.touching)
       *t.touching = std::any_of(t.history, t.history + tri::kHistoryDoubles,
                                 [](double v) { return v != 0.0; });
+    if (r.intersecting && !first.found())
+      first = {std::min(tag[t.i], tag[t.j]), std::max(tag[t.i], tag[t.j])};
     if (r.contacts_after == 0)
       continue;
     // r is the force on the pair's first atom (a) and the torques on both.
     const int a = t.swapped ? t.j : t.i, b = t.swapped ? t.i : t.j;
-    Contribution ca{a, tag[b], {}, {}}, cb{b, tag[a], {}, {}};
-    for (int d = 0; d < 3; ++d) {
-      ca.force[d] = r.force_a[d];
-      ca.torque[d] = r.torque_a[d];
-      cb.force[d] = -r.force_a[d];
-      cb.torque[d] = r.torque_b[d];
-    }
-    for (const Contribution &c : {ca, cb})
-      if (newton || c.atom < nlocal) // a is i or j; i is always owned
-        contributions_.push_back(c);
+    if (newton || a < nlocal) // a is i or j; i is always owned
+      engine_.contribute(a, tag[b], r.force_a, r.torque_a);
+    if (newton || b < nlocal)
+      engine_.contribute(b, tag[a], -r.force_a, r.torque_b);
   }
-  // Stable: two images of one partner (a periodic box smaller than a particle's reach) keep
-  // the neighbour-list order.
-  std::stable_sort(contributions_.begin(), contributions_.end(),
-                   [](const Contribution &x, const Contribution &y) {
-                     return x.atom != y.atom ? x.atom < y.atom : x.partner < y.partner;
-                   });
-  for (const Contribution &c : contributions_)
-    for (int d = 0; d < 3; ++d) {
-      f[c.atom][d] += c.force[d];
-      torque[c.atom][d] += c.torque[d];
-    }
+  engine_.apply(atom->f, atom->torque);
+  tri_liggghts::ContactBoard &board = particles_->board();
+  board.publish(board_slot_, engine_.tally(), first);
+  board.publish_particle_pairs(list);
+}
+
+// Every rank that failed stops (error->one): the others may have no failing pair.
+void PairTriGran::report_failure() {
+  const Task &t = tasks_[engine_.failed_task()];
+  const std::string msg = std::string(kStyle) + ": the contact kernel failed on particles " +
+                          std::to_string(atom->tag[t.i]) + " and " +
+                          std::to_string(atom->tag[t.j]) + ": " + engine_.failure();
+  error->one(FLERR, msg.c_str());
+}
+
+double PairTriGran::memory_usage() {
+  return PairGran::memory_usage() + static_cast<double>(engine_.bytes()) +
+         static_cast<double>(tasks_.capacity() * sizeof(Task));
 }

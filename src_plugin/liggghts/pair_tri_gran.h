@@ -11,6 +11,10 @@
 // history (fix contacthistory): it survives neighbour-list rebuilds, migration between ranks
 // and restarts. Requires newton_pair off, as every granular history pair style.
 //
+// The loop, scratch, error capture and ordered sums are tri::InteractionEngine's (shared with
+// fix tri/wall); this style lists the pairs and says what its two bodies are. It publishes
+// its tallies and its neighbour list on the contact board of fix tri/particles.
+//
 // Determinism: the per-pair work (OpenMP over particle pairs, or inside one pair) writes
 // results into a per-pair slot, and one thread sums them afterwards, so the result does not
 // depend on the thread count. It does not depend on the number of MPI ranks either: every
@@ -25,6 +29,7 @@
 #include "pair_gran.h"
 
 #include "contact_settings.h"
+#include "interaction_engine.h"
 #include "material_table.h"
 
 #include <vector>
@@ -40,9 +45,6 @@ public:
   int64_t hashcode() override { return 0x7472692f6772616eLL; } // "tri/gran"
   double stressStrainExponent() override { return 1.0; }
 
-  // Statistics of the last force evaluation on this rank.
-  const tri::InteractionTally &tally() const { return tally_; }
-
 protected:
   void compute_force(int eflag, int vflag, int addflag) override;
 
@@ -54,22 +56,15 @@ private:
     int *touching;   // LIGGGHTS keeps (migrates, restarts) the history only where this is set
   };
   class FixTriParticles *particles_ = nullptr;
+  int board_slot_ = -1;
   tri_liggghts::ContactSettings settings_;
   tri_liggghts::MaterialTable materials_;
   std::vector<Task> tasks_;
-  std::vector<tri::PairForceResult> results_;
-  // One pair's force and torque on one atom, to be summed in partner-tag order.
-  struct Contribution {
-    int atom;
-    tagint partner;
-    double force[3], torque[3];
-  };
-  std::vector<Contribution> contributions_;
-  std::vector<tri::InteractionScratch> scratch_;    // one per thread
-  std::vector<tri::InteractionTally> thread_tally_; // one per thread
-  tri::InteractionTally tally_;
+  tri::InteractionEngine engine_;
 
-  void interact(long k, int thread, double dt, bool update_history); // tasks_[k]
+  void collect_tasks();
+  void report_failure();
+  double memory_usage() override;
 };
 
 } // namespace LAMMPS_NS

@@ -1,24 +1,16 @@
-// The contact statistics of the last force evaluation, over pair tri/gran and every fix
-// tri/wall, summed over all ranks (counts summed, deepest overlap maxed, closest distance
-// minimised). Read by compute tri/stats and fix tri/adapt_dt.
+// The contact statistics of the last force evaluation over every source on the contact board
+// (contact_board.h), summed over all ranks column by column as the statistics table says
+// (interaction_tally.h: counts summed, deepest overlap maxed, closest distance minimised).
+// Read by compute tri/stats, fix tri/adapt_dt and the run-safety checks.
 #pragma once
 
-#include "body_interaction.h"
+#include "contact_board.h"
 
-namespace LAMMPS_NS {
-class LAMMPS;
-}
+#include <mpi.h>
 
 namespace tri_liggghts {
 
-struct GlobalTally {
-  tri::InteractionTally all;
-  bool have_pair = false; // pair tri/gran is defined
-  int walls = 0;          // number of fix tri/wall
-};
-
-enum class TallySource { all, pair, wall };
-
-GlobalTally global_tally(LAMMPS_NS::LAMMPS *lmp, TallySource source = TallySource::all);
+tri::InteractionTally global_tally(const ContactBoard &board, MPI_Comm world,
+                                   TallySource source = TallySource::all);
 
 } // namespace tri_liggghts

@@ -1,0 +1,105 @@
+// The host loop shared by every contact-producing style (pair tri/gran, fix tri/wall): a list
+// of body-pair tasks evaluated on OpenMP threads, each thread with scratch of its own, errors
+// caught per task, results tallied and forces summed in an order that does not depend on the
+// thread count. A style keeps only what differs: where its tasks come from and what its second
+// body is (the `evaluate` callable).
+//
+// Determinism: every task writes its result into its own slot; the tally is summed over the
+// slots in task order, and the per-atom sums in (atom, partner) order (stable: equal keys keep
+// the order they were contributed in), so the forces are bitwise the same for any thread count.
+// Errors: an exception thrown by `evaluate` does not leave the parallel region (it would end in
+// std::terminate); the engine keeps the message of the lowest failing task, and the host
+// reports it through its own error path after the loop, naming the bodies of that task.
+// Memory: scratch grows to the largest task seen and is kept (bytes() counts it).
+#pragma once
+
+#include "body_interaction.h"
+#include "interaction_tally.h"
+
+#include <cstddef>
+#include <exception>
+#include <string>
+#include <vector>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+namespace tri {
+
+class InteractionEngine {
+public:
+  // Evaluates tasks [0, n): evaluate(k, scratch, stats) returns task k's PairForceResult,
+  // using `scratch` (this thread's) and adding the distance kernel's counters to `stats`.
+  // threads <= 1: the calling thread alone, no parallel region.
+  template <class Evaluate> void run(std::size_t n, int threads, Evaluate &&evaluate);
+
+  std::size_t size() const { return results_.size(); }
+  const PairForceResult &result(std::size_t k) const { return results_[k]; }
+
+  bool failed() const { return failed_task_ < results_.size(); }
+  std::size_t failed_task() const { return failed_task_; } // lowest failing task
+  const std::string &failure() const { return failure_; }
+
+  // Statistics of the last run.
+  const InteractionTally &tally() const { return tally_; }
+
+  // Ordered summation: contribute() the force and torque that task results put on an atom,
+  // then apply() adds them to f and torque (rows indexed by atom) in (atom, partner) order.
+  void clear_contributions() { contributions_.clear(); }
+  void contribute(int atom, long long partner, const Eigen::Vector3d &force,
+                  const Eigen::Vector3d &torque);
+  void apply(double **f, double **torque);
+
+  std::size_t bytes() const; // heap memory held
+
+private:
+  struct Contribution {
+    int atom;
+    long long partner;
+    double force[3], torque[3];
+  };
+  std::vector<InteractionScratch> scratch_; // one per thread
+  std::vector<ContactStats> thread_stats_;  // one per thread
+  std::vector<PairForceResult> results_;
+  std::vector<Contribution> contributions_;
+  InteractionTally tally_;
+  std::size_t failed_task_ = 0;
+  std::string failure_;
+
+  void prepare(std::size_t n, int threads);
+  void record_failure(std::size_t k, const char *what);
+  void finish();
+};
+
+template <class Evaluate> void InteractionEngine::run(std::size_t n, int threads, Evaluate &&evaluate) {
+  if (threads < 1)
+    threads = 1;
+  prepare(n, threads);
+  const long count = static_cast<long>(n);
+  auto one = [&](long k, int thread) {
+    try {
+      results_[k] = evaluate(static_cast<std::size_t>(k), scratch_[thread], thread_stats_[thread]);
+    } catch (const std::exception &e) {
+      record_failure(static_cast<std::size_t>(k), e.what());
+    } catch (...) {
+      record_failure(static_cast<std::size_t>(k), "unknown exception");
+    }
+  };
+  if (threads == 1) {
+    for (long k = 0; k < count; ++k)
+      one(k, 0);
+  } else {
+#pragma omp parallel for schedule(dynamic, 4) num_threads(threads)
+    for (long k = 0; k < count; ++k) {
+      int thread = 0;
+#ifdef _OPENMP
+      thread = omp_get_thread_num();
+#endif
+      one(k, thread);
+    }
+  }
+  finish();
+}
+
+} // namespace tri

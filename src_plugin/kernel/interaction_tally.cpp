@@ -1,0 +1,127 @@
+#include "interaction_tally.h"
+
+#include <algorithm>
+
+namespace tri {
+
+void InteractionTally::add(const PairForceResult &r) {
+  ++body_pairs_checked;
+  if (r.contacts_after > 0)
+    ++body_pairs_in_contact;
+  contacts_before += r.contacts_before;
+  contacts_after += r.contacts_after;
+  if (r.intersecting)
+    ++penetrations;
+  max_overlap = std::max(max_overlap, r.max_overlap);
+  min_distance = std::min(min_distance, r.min_distance);
+}
+
+InteractionTally &InteractionTally::operator+=(const InteractionTally &o) {
+  for (const StatColumn &c : stats_columns()) {
+    const double mine = c.value(*this), theirs = c.value(o);
+    switch (c.reduction) {
+    case StatReduction::sum:
+      c.assign(*this, mine + theirs);
+      break;
+    case StatReduction::max:
+      c.assign(*this, std::max(mine, theirs));
+      break;
+    case StatReduction::min:
+      c.assign(*this, std::min(mine, theirs));
+      break;
+    }
+  }
+  return *this;
+}
+
+double StatColumn::value(const InteractionTally &t) const {
+  InteractionTally &field_owner = const_cast<InteractionTally &>(t); // read only
+  return count ? static_cast<double>(*count(field_owner, bin)) : *length(field_owner);
+}
+
+void StatColumn::assign(InteractionTally &t, double v) const {
+  if (count)
+    *count(t, bin) = static_cast<long long>(v);
+  else
+    *length(t) = v;
+}
+
+namespace {
+
+using Tally = InteractionTally;
+
+StatColumn count_column(const char *name, const char *meaning,
+                        long long *(*field)(Tally &, int)) {
+  StatColumn c{name, "1", meaning, StatReduction::sum};
+  c.count = field;
+  return c;
+}
+
+StatColumn length_column(const char *name, const char *meaning, StatReduction reduction,
+                         double *(*field)(Tally &)) {
+  StatColumn c{name, "m", meaning, reduction};
+  c.length = field;
+  return c;
+}
+
+std::vector<StatColumn> make_columns() {
+  std::vector<StatColumn> c = {
+      count_column("pairs_checked", "body pairs whose bounding spheres overlap (triangles examined)",
+                   [](Tally &t, int) { return &t.body_pairs_checked; }),
+      count_column("pairs_in_contact", "body pairs with at least one contact point",
+                   [](Tally &t, int) { return &t.body_pairs_in_contact; }),
+      count_column("triangle_pairs_tested", "triangle pairs given to the distance kernel",
+                   [](Tally &t, int) { return &t.distance.triangle_pairs_tested; }),
+      count_column("triangle_pairs_culled", "triangle pairs removed by the bounding-box cull",
+                   [](Tally &t, int) { return &t.distance.triangle_pairs_culled; }),
+      count_column("contacts_before", "triangle pairs within the soft layers (before reduction)",
+                   [](Tally &t, int) { return &t.contacts_before; }),
+      count_column("contacts_after", "contact points after reduction",
+                   [](Tally &t, int) { return &t.contacts_after; }),
+      count_column("fallbacks", "triangle pairs recomputed by brute force (hybrid kernels)",
+                   [](Tally &t, int) { return &t.distance.fallbacks; }),
+      count_column("penalty_pairs", "triangle pairs run through the penalty iteration",
+                   [](Tally &t, int) { return &t.distance.penalty_pairs; }),
+      count_column("penetrations", "body pairs whose real surfaces intersect (soft layer overrun)",
+                   [](Tally &t, int) { return &t.penetrations; }),
+      length_column("max_overlap", "deepest soft-layer overlap", StatReduction::max,
+                    [](Tally &t) { return &t.max_overlap; }),
+      length_column("min_distance", "closest triangle-pair distance (0 when nothing was tested)",
+                    StatReduction::min, [](Tally &t) { return &t.min_distance; }),
+  };
+  for (int k = 0; k <= kMaxPenaltyIterations; ++k) {
+    const std::string meaning =
+        k == 0 ? std::string("penalty pairs with no Newton step within the tolerance")
+               : "penalty pairs whose Newton step " + std::to_string(k) +
+                     " was the first within the tolerance";
+    StatColumn h = count_column("", "", [](Tally &t, int bin) {
+      return &t.distance.newton_histogram[bin];
+    });
+    h.name = "newton_" + std::to_string(k);
+    h.meaning = meaning;
+    h.bin = k;
+    c.push_back(h);
+  }
+  // After the histogram, so that the columns before it keep their numbers.
+  c.push_back(count_column("triangle_contacts",
+                           "triangle pairs the distance kernel reported within the soft layers",
+                           [](Tally &t, int) { return &t.distance.contacts; }));
+  return c;
+}
+
+} // namespace
+
+const std::vector<StatColumn> &stats_columns() {
+  static const std::vector<StatColumn> columns = make_columns();
+  return columns;
+}
+
+int stats_column_index(const std::string &name) {
+  const std::vector<StatColumn> &c = stats_columns();
+  for (std::size_t k = 0; k < c.size(); ++k)
+    if (c[k].name == name)
+      return static_cast<int>(k) + 1;
+  return 0;
+}
+
+} // namespace tri

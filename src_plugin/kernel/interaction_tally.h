@@ -1,0 +1,55 @@
+// Step statistics of many body interactions (particle pairs, particle-wall patches), and the
+// one table that names them. The table is the single place where a counter's name, unit,
+// meaning and cross-rank reduction are written: compute tri/stats takes its column order from
+// it, the MPI reduction of the host layer packs and unpacks through it, the tool
+// `tri-stats-columns` prints it (the README's table and the deck tests take names from there),
+// so reordering or adding a counter changes every reader at once.
+#pragma once
+
+#include "contact_force.h"
+#include "particle_contacts.h"
+
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace tri {
+
+// Values summed by the host in a fixed order (no globals).
+struct InteractionTally {
+  long long body_pairs_checked = 0;    // bounding spheres overlapped: triangles were examined
+  long long body_pairs_in_contact = 0; // at least one contact point
+  long long contacts_before = 0;       // triangle-pair contacts
+  long long contacts_after = 0;        // contact points after reduction
+  long long penetrations = 0;          // interactions whose real surfaces intersect
+  double max_overlap = 0.0;            // m, deepest soft-layer overlap
+  double min_distance = std::numeric_limits<double>::infinity(); // m, closest triangle pair
+  ContactStats distance;               // the distance kernel's own counters
+
+  void add(const PairForceResult &r); // one interaction
+  InteractionTally &operator+=(const InteractionTally &o);
+};
+
+enum class StatReduction { sum, max, min }; // how a column combines over threads and ranks
+
+struct StatColumn {
+  std::string name;    // what decks and tests call it: c_ID[k] is stats_columns()[k - 1]
+  std::string unit;    // "1" for counts
+  std::string meaning; // one line for the README and tri-stats-columns
+  StatReduction reduction;
+  // The field: a count (bin: the Newton histogram's bin, else 0) or a length; one is set.
+  long long *(*count)(InteractionTally &t, int bin) = nullptr;
+  double *(*length)(InteractionTally &t) = nullptr;
+  int bin = 0;
+
+  double value(const InteractionTally &t) const; // counts as doubles (exact below 2^53)
+  void assign(InteractionTally &t, double v) const;
+};
+
+// Every column of compute tri/stats, in its vector order.
+const std::vector<StatColumn> &stats_columns();
+
+// The column called `name`, 1-based as in c_ID[k]; 0 if there is none.
+int stats_column_index(const std::string &name);
+
+} // namespace tri

@@ -1,0 +1,124 @@
+#include "run_safety_monitor.h"
+
+#include "approach_speed.h"
+#include "step_tally.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "lammps.h"
+#include "modify.h"
+#include "update.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace tri_liggghts {
+
+// A pair within reach that this step brought more than epsilon closer, while there are
+// contacts on this rank (it is in contact, or about to be), cannot be resolved by the soft
+// layer. Local: with newton off every pair is seen whole on each rank that owns one of its
+// particles. Reported in end_of_step.
+void RunSafetyMonitor::after_pair_forces(const ContactBoard &board) {
+  unresolved_ = Unresolved{};
+  if (board.sources(SourceKind::particle_pairs) == 0 ||
+      board.local(TallySource::pair).contacts_after == 0)
+    return;
+  const FastestPair p = fastest_pair_within_reach(lmp_, board);
+  unresolved_.step = p.normal_speed * lmp_->update->dt;
+  unresolved_.speed = p.normal_speed;
+  unresolved_.tag_i = p.tag_i;
+  unresolved_.tag_j = p.tag_j;
+}
+
+void RunSafetyMonitor::end_of_step(const ContactBoard &board) {
+  const LAMMPS_NS::Update *update = lmp_->update;
+  if (!initial_checked_ && update->ntimestep == update->firststep + 1) {
+    initial_checked_ = true;
+    check_initial_overlaps(board);
+  }
+  find_unresolved_wall_contact(board);
+  report_unresolved_contacts();
+}
+
+// Particles created inside each other or a wall. A shallow intersection is pushed apart, but
+// past about the soft-layer width the triangle contacts of a deep one point every way and
+// their forces can cancel, leaving the particles stuck inside each other, so the first step
+// of the first run stops instead, naming one pair.
+void RunSafetyMonitor::check_initial_overlaps(const ContactBoard &board) {
+  const tri::InteractionTally pair = global_tally(board, lmp_->world, TallySource::pair);
+  const tri::InteractionTally wall = global_tally(board, lmp_->world, TallySource::wall);
+  if (pair.penetrations + wall.penetrations == 0)
+    return;
+  const IntersectingPair mine = board.first_intersecting(SourceKind::particle_pairs);
+  double tags[2] = {double(mine.tag_a), double(mine.tag_b)}, found[2];
+  MPI_Allreduce(tags, found, 2, MPI_DOUBLE, MPI_MAX, lmp_->world);
+  char example[80] = "";
+  if (found[0] > 0.0)
+    std::snprintf(example, sizeof example, ", e.g. particles %.0f and %.0f", found[0], found[1]);
+  char msg[600];
+  std::snprintf(msg, sizeof msg,
+                "Fix tri/particles: the run starts with intersecting surfaces (%lld particle "
+                "pair(s)%s; %lld particle-wall contact(s)): particles created inside each other "
+                "or inside a wall cannot be pushed apart reliably (the contact force acts in "
+                "the soft layers); create them at least 2 x epsilon apart",
+                pair.penetrations, example, wall.penetrations);
+  lmp_->error->all(FLERR, msg);
+}
+
+// Walls: a wall's direction is not known here, so only once real surfaces intersect, and only
+// a particle that moves against its force (approaching; one pushed out of a wall moves with
+// it). Kept only if it moves farther per step than the pair found in after_pair_forces.
+void RunSafetyMonitor::find_unresolved_wall_contact(const ContactBoard &board) {
+  if (board.local(TallySource::wall).penetrations == 0)
+    return;
+  const LAMMPS_NS::Atom *atom = lmp_->atom;
+  const double dt = lmp_->update->dt;
+  double **v = atom->v, **f = atom->f;
+  for (int i = 0; i < atom->nlocal; ++i) {
+    const double speed = std::sqrt(v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2]);
+    const double along_force = v[i][0] * f[i][0] + v[i][1] * f[i][1] + v[i][2] * f[i][2];
+    if (along_force < 0.0 && speed * dt > unresolved_.step) {
+      unresolved_.step = speed * dt;
+      unresolved_.speed = speed;
+      unresolved_.tag_i = atom->tag[i];
+      unresolved_.tag_j = 0;
+    }
+  }
+}
+
+// error->one would abort without flushing the screen (the message is lost in a pipe), so the
+// ranks agree first and stop together with error->all.
+void RunSafetyMonitor::report_unresolved_contacts() {
+  struct {
+    double step;
+    int rank;
+  } mine{unresolved_.step, lmp_->comm->me}, worst;
+  MPI_Allreduce(&mine, &worst, 1, MPI_DOUBLE_INT, MPI_MAXLOC, lmp_->world);
+  if (!(worst.step > epsilon_))
+    return;
+  double info[3] = {unresolved_.speed, double(unresolved_.tag_i), double(unresolved_.tag_j)};
+  MPI_Bcast(info, 3, MPI_DOUBLE, worst.rank, lmp_->world);
+  const double dt = lmp_->update->dt;
+  const char *advice = lmp_->modify->find_fix_style("tri/adapt_dt", 0)
+                           ? "lower dtmin of fix tri/adapt_dt"
+                           : "use a smaller timestep or fix tri/adapt_dt";
+  char msg[600];
+  if (info[2] > 0.0)
+    std::snprintf(msg, sizeof msg,
+                  "Fix tri/particles: step " BIGINT_FORMAT ": particles %.0f and %.0f meet at "
+                  "%g m/s, %g m per time step of %g s, more than epsilon (%g m): the soft layer "
+                  "cannot resolve such a contact and particles may pass through each other; %s",
+                  lmp_->update->ntimestep, info[1], info[2], info[0], info[0] * dt, dt, epsilon_,
+                  advice);
+  else
+    std::snprintf(msg, sizeof msg,
+                  "Fix tri/particles: step " BIGINT_FORMAT ": particle %.0f moves at %g m/s "
+                  "against its contact force, %g m per time step of %g s, more than epsilon "
+                  "(%g m), and a particle-wall contact has intersecting surfaces: the soft layer "
+                  "cannot resolve such a contact and particles may pass through walls; %s",
+                  lmp_->update->ntimestep, info[1], info[0], info[0] * dt, dt, epsilon_, advice);
+  lmp_->error->all(FLERR, msg);
+}
+
+} // namespace tri_liggghts

@@ -1,0 +1,21 @@
+// The shapes of `fix tri/particles`, built from its parsed keywords (particle_options.h): mesh
+// files read and scaled, random rocks generated, each validated and moved into its principal
+// frame (tri::make_shape), then checked against the run: every shape fits in the box, and no
+// mesh is finer than the soft layer. Every problem ends in error->all naming the shape (and
+// the file).
+#pragma once
+
+#include "particle_options.h"
+#include "shape.h"
+
+#include <vector>
+
+namespace LAMMPS_NS {
+class LAMMPS;
+}
+
+namespace tri_liggghts {
+
+std::vector<tri::Shape> build_shapes(LAMMPS_NS::LAMMPS *lmp, const ParticleOptions &options);
+
+} // namespace tri_liggghts
