@@ -276,11 +276,16 @@ TEST(ContactReduction, EquilibriumOverlapIndependentOfMeshResolution) {
   std::vector<double> overlaps;
   for (const int k : {1, 2, 4, 8}) {
     double lo = 0.0, hi = kLayer;
+    // The target must lie between the forces at the ends, or the bisection finds nothing.
+    ASSERT_LT(run_case({k, 60, lo}).force.z(), weight) << "k " << k;
+    ASSERT_GT(run_case({k, 60, 0.999 * hi}).force.z(), weight) << "k " << k;
     for (int it = 0; it < 16; ++it) {
       const double mid = 0.5 * (lo + hi);
       (run_case({k, 60, mid}).force.z() < weight ? lo : hi) = mid;
     }
     overlaps.push_back(0.5 * (lo + hi));
+    // Converged to the equilibrium: the force there is the weight.
+    EXPECT_NEAR(run_case({k, 60, overlaps.back()}).force.z(), weight, 1e-3 * weight) << "k " << k;
     std::printf("tri/face %3d: equilibrium overlap / layer %.6f\n", 2 * k * k,
                 overlaps.back() / kLayer);
   }

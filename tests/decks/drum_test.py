@@ -1,0 +1,102 @@
+#!/usr/bin/env python3
+"""A cube resting at the bottom of a drum wall that fix move/mesh rotates: friction carries it
+at the drum's surface velocity, omega x r at its position, and it turns with the drum. The
+wall's velocity at the contact comes from the rigid motion fitted to the wall patch's node
+velocities (src_plugin/kernel/rigid_motion.h); the mean of the node velocities, which the wall
+used before, is off by omega x (contact - patch mean). Standard library only.
+
+usage: drum_test.py --exe LIGGGHTS_TRI --work DIR
+"""
+import argparse
+import math
+import os
+import shutil
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "examples", "drum"))
+import make_drum  # noqa: E402
+
+RADIUS, LENGTH, SEGMENTS = 0.03, 0.02, 36
+SIDE, EPS = 0.004, 1e-4
+PERIOD = 3.0  # s: 2.09 rad/s, surface speed 0.063 m/s
+
+
+def write_cube(path, side):
+    h = 0.5 * side
+    v = [(sx * h, sy * h, sz * h) for sz in (-1, 1) for sy in (-1, 1) for sx in (-1, 1)]
+    faces = [(0, 2, 3), (0, 3, 1), (4, 5, 7), (4, 7, 6), (0, 1, 5), (0, 5, 4),
+             (2, 6, 7), (2, 7, 3), (0, 4, 6), (0, 6, 2), (1, 3, 7), (1, 7, 5)]
+    make_drum.write_stl(path, [tuple(v[i] for i in f) for f in faces])
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--exe", required=True)
+    ap.add_argument("--work", required=True)
+    a = ap.parse_args()
+    shutil.rmtree(a.work, ignore_errors=True)
+    os.makedirs(a.work)
+    drum, cube = os.path.join(a.work, "drum.stl"), os.path.join(a.work, "cube.stl")
+    make_drum.write_stl(drum, make_drum.drum_triangles(RADIUS, LENGTH, SEGMENTS))
+    write_cube(cube, SIDE)
+    bottom = RADIUS * math.cos(math.pi / SEGMENTS)  # the flat bottom facet, below the axis
+    # The layers overlapping by about the equilibrium overlap m g / kn (0.8 um): no bounce.
+    z0 = -bottom + 0.5 * SIDE + 2.0 * EPS - 8e-7
+    dump = os.path.join(a.work, "carry.dump")
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+               OMP_NUM_THREADS="1")
+    variables = {"z0": z0, "cube": cube, "drum": drum, "settle": 3000, "period": PERIOD,
+                 "every": 100, "carry": 6000, "dump": dump}
+    cmd = [a.exe, "-in", os.path.join(HERE, "in.drum_carry"), "-log", "none"]
+    for k, v in variables.items():
+        cmd += ["-var", k, str(v)]
+    p = subprocess.run(cmd, cwd=a.work, env=env, stdout=subprocess.PIPE,
+                       stderr=subprocess.STDOUT, text=True, errors="replace", timeout=900)
+    failures = []
+    if p.returncode != 0:
+        print(p.stdout[-3000:])
+        print(f"FAIL: exit {p.returncode}")
+        return 1
+    rows = []
+    with open(dump) as f:
+        lines = f.read().splitlines()
+    for k, line in enumerate(lines):
+        if line.startswith("ITEM: TIMESTEP"):
+            step = int(lines[k + 1])
+        if line.startswith("ITEM: ATOMS"):
+            rows.append((step, [float(x) for x in lines[k + 1].split()]))
+    if len(rows) < 10:
+        failures.append(f"{len(rows)} dump frames, expected 13")
+    omega = 2.0 * math.pi / PERIOD  # about +y (right hand), as move/mesh rotate turns it
+    # After the start-up slip (about 0.01 s), the cube sticks: over the second half of the
+    # rotation its centre must turn with the drum, p(t1) = R_y(omega (t1 - t0)) p(t0). Positions,
+    # not the velocities of single frames: the face contact rocks at the time-step scale.
+    late = [(s, r) for s, r in rows if s >= variables["settle"] + variables["carry"] // 2]
+    (s0, r0), (s1, r1) = late[0], late[-1]
+    angle = omega * (s1 - s0) * 1e-5
+    x0, z0_ = r0[1], r0[3]
+    # Rotation about +y by angle: x' = x cos + z sin, z' = -x sin + z cos.
+    expected = (x0 * math.cos(angle) + z0_ * math.sin(angle), -x0 * math.sin(angle) + z0_ * math.cos(angle))
+    moved = math.hypot(expected[0] - x0, expected[1] - z0_)
+    miss = math.hypot(r1[1] - expected[0], r1[3] - expected[1])
+    spin = sum(r[8] for _, r in late) / len(late)
+    print(f"steps {s0}-{s1}: the drum turned {angle:.5f} rad, the cube's centre should move "
+          f"{moved * 1e3:.4f} mm and ends {miss * 1e6:.3f} um from there; mean omega_y "
+          f"{spin:.4f} rad/s of {omega:.4f}")
+    if not moved > 1e-3:
+        failures.append(f"the drum moved the cube only {moved:.3g} m: nothing to compare")
+    if miss > 0.01 * moved:
+        failures.append(f"the cube missed the drum's motion by {miss / moved:.3%} of it (> 1 %)")
+    if abs(spin - omega) > 0.03 * omega:
+        failures.append(f"mean spin {spin:.4f} rad/s, the drum's {omega:.4f} (> 3 % off)")
+    for f in failures:
+        print("FAIL:", f)
+    if not failures:
+        print(f"drum: carried at the drum's motion within {miss / moved:.3%}")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

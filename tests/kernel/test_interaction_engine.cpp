@@ -1,0 +1,238 @@
+// tri::InteractionEngine: results and tallies independent of the thread count (bitwise),
+// exceptions caught per task and reported for the lowest failing task, forces summed in
+// (atom, partner) order whatever the order of contribution; and body_interaction's contract
+// (pair symmetry, walls as rigidly moving bodies of infinite mass).
+#include "interaction_engine.h"
+
+#include "random_rock.h"
+#include "shape.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <stdexcept>
+#include <vector>
+
+using Eigen::Vector3d;
+
+namespace {
+
+constexpr double kEps = 1e-4;
+
+tri::Shape rock(std::uint64_t seed) {
+  tri::RockParameters p;
+  p.ntri = 40;
+  p.size = 0.004;
+  p.seed = seed;
+  return tri::make_shape("rock", tri::random_rock(p));
+}
+
+struct Particle {
+  tri::TriangleSoA world;
+  tri::Body body;
+};
+
+// A row of rocks, each touching the next (centres 3.9 mm apart, bounding diameter 4 mm).
+std::vector<Particle> touching_row(int n) {
+  std::vector<Particle> ps(n);
+  for (int k = 0; k < n; ++k) {
+    const tri::Shape s = rock(k + 1);
+    const Eigen::Matrix3d r =
+        Eigen::AngleAxisd(0.7 * k, Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+    const Vector3d x(0.0036 * k, 0.0, 0.0);
+    tri::transform_soa(s.soa, r, x, ps[k].world);
+    ps[k].body.epsilon = kEps;
+    ps[k].body.longest_edge = s.max_edge_length;
+    ps[k].body.min_edge = s.min_edge_length;
+    ps[k].body.state.x = x;
+    ps[k].body.state.v = Vector3d(-0.01 * k, 0.002, 0.0);
+    ps[k].body.state.omega = Vector3d(0.0, 0.0, 3.0 * k);
+    ps[k].body.state.mass = 1e-4;
+  }
+  for (Particle &p : ps)
+    p.body.triangles = &p.world;
+  return ps;
+}
+
+tri::InteractionSettings settings() {
+  tri::InteractionSettings s;
+  s.coefficients.kn = 2000;
+  s.coefficients.kt = 1000;
+  s.coefficients.gamman = 20;
+  s.coefficients.gammat = 10;
+  s.coefficients.mu = 0.5;
+  s.coefficients.limit_force = true;
+  return s;
+}
+
+struct EngineRun {
+  std::vector<tri::PairForceResult> results;
+  tri::InteractionTally tally;
+  std::vector<double> f, t; // n x 3
+};
+
+EngineRun evaluate_row(const std::vector<Particle> &ps, int threads) {
+  tri::InteractionEngine engine;
+  const tri::InteractionSettings s = settings();
+  const int n = static_cast<int>(ps.size());
+  std::vector<std::vector<double>> history(n - 1, std::vector<double>(tri::kHistoryDoubles, 0.0));
+  engine.run(n - 1, threads,
+             [&](std::size_t k, tri::InteractionScratch &scratch, tri::ContactStats &stats) {
+               return tri::body_interaction(ps[k].body, ps[k + 1].body, s, 1e-6,
+                                            history[k].data(), scratch, stats);
+             });
+  EXPECT_FALSE(engine.failed());
+  EngineRun out;
+  for (std::size_t k = 0; k < engine.size(); ++k)
+    out.results.push_back(engine.result(k));
+  out.tally = engine.tally();
+  std::vector<double> f(3 * n, 0.0), t(3 * n, 0.0);
+  std::vector<double *> frows(n), trows(n);
+  for (int a = 0; a < n; ++a) {
+    frows[a] = &f[3 * a];
+    trows[a] = &t[3 * a];
+  }
+  // Contributed in reverse: apply() must still sum per atom in partner order.
+  for (int k = n - 2; k >= 0; --k) {
+    const tri::PairForceResult &r = engine.result(k);
+    engine.contribute(k, k + 1, r.force_a, r.torque_a);
+    engine.contribute(k + 1, k, -r.force_a, r.torque_b);
+  }
+  engine.apply(frows.data(), trows.data());
+  out.f = f;
+  out.t = t;
+  return out;
+}
+
+} // namespace
+
+TEST(InteractionEngine, ThreadCountChangesNothing) {
+  const std::vector<Particle> ps = touching_row(12);
+  const EngineRun one = evaluate_row(ps, 1), four = evaluate_row(ps, 4);
+  ASSERT_EQ(one.results.size(), four.results.size());
+  long long contacts = 0;
+  for (std::size_t k = 0; k < one.results.size(); ++k) {
+    EXPECT_EQ(one.results[k].force_a, four.results[k].force_a) << "task " << k;
+    EXPECT_EQ(one.results[k].torque_b, four.results[k].torque_b) << "task " << k;
+    contacts += one.results[k].contacts_after;
+  }
+  EXPECT_GT(contacts, 5); // the row touches: the comparison is not of zeros
+  EXPECT_EQ(one.f, four.f);
+  EXPECT_EQ(one.t, four.t);
+  for (const tri::StatColumn &c : tri::stats_columns())
+    EXPECT_EQ(c.value(one.tally), c.value(four.tally)) << c.name;
+  EXPECT_EQ(one.tally.body_pairs_checked, 11);
+  EXPECT_GT(one.tally.distance.triangle_pairs_tested, 0);
+}
+
+TEST(InteractionEngine, AppliesInAtomThenPartnerOrder) {
+  tri::InteractionEngine engine;
+  engine.run(0, 1, [](std::size_t, tri::InteractionScratch &, tri::ContactStats &) {
+    return tri::PairForceResult{};
+  });
+  // Values whose sum depends on the order: 1e16 + 1 - 1e16 is 0 one way, 1 another.
+  engine.contribute(0, 7, Vector3d(1.0, 0, 0), Vector3d::Zero());
+  engine.contribute(0, 3, Vector3d(1e16, 0, 0), Vector3d::Zero());
+  engine.contribute(0, 9, Vector3d(-1e16, 0, 0), Vector3d::Zero());
+  double f0[3] = {0, 0, 0}, t0[3] = {0, 0, 0};
+  double *f[1] = {f0}, *t[1] = {t0};
+  engine.apply(f, t);
+  // Partner order 3, 7, 9: (1e16 + 1) - 1e16 = 0 in doubles.
+  EXPECT_EQ(f0[0], (1e16 + 1.0) - 1e16);
+}
+
+TEST(InteractionEngine, ExceptionsAreCaughtAndTheLowestFailingTaskIsNamed) {
+  for (const int threads : {1, 3}) {
+    tri::InteractionEngine engine;
+    std::vector<int> evaluated(20, 0);
+    engine.run(20, threads, [&](std::size_t k, tri::InteractionScratch &, tri::ContactStats &) {
+      evaluated[k] = 1;
+      if (k == 13 || k == 6)
+        throw std::runtime_error("task " + std::to_string(k) + " broke");
+      tri::PairForceResult r;
+      r.contacts_after = 1;
+      return r;
+    });
+    ASSERT_TRUE(engine.failed());
+    EXPECT_EQ(engine.failed_task(), 6u);
+    EXPECT_EQ(engine.failure(), "task 6 broke");
+    for (int k = 0; k < 20; ++k)
+      EXPECT_EQ(evaluated[k], 1) << "task " << k; // the others still ran
+    // A later run without failures clears the verdict.
+    engine.run(2, threads, [](std::size_t, tri::InteractionScratch &, tri::ContactStats &) {
+      return tri::PairForceResult{};
+    });
+    EXPECT_FALSE(engine.failed());
+  }
+}
+
+TEST(BodyInteraction, SwappingTheBodiesNegatesTheForce) {
+  const std::vector<Particle> ps = touching_row(2);
+  const tri::InteractionSettings s = settings();
+  tri::InteractionScratch scratch;
+  tri::ContactStats stats;
+  const tri::PairForceResult ab =
+      tri::body_interaction(ps[0].body, ps[1].body, s, 1e-6, nullptr, scratch, stats);
+  const tri::PairForceResult ba =
+      tri::body_interaction(ps[1].body, ps[0].body, s, 1e-6, nullptr, scratch, stats);
+  ASSERT_GT(ab.contacts_after, 0);
+  EXPECT_LT((ab.force_a + ba.force_a).norm(), 1e-9 * ab.force_a.norm());
+  EXPECT_LT((ab.torque_a - ba.torque_b).norm(), 1e-9 * (ab.torque_a.norm() + 1e-30));
+}
+
+// A cube resting on a wall patch that turns about a far axis: friction drags the cube along
+// the wall's velocity at the contact point, omega x (p - axis), not at the patch's mean node
+// velocity.
+TEST(BodyInteraction, WallVelocityIsTheRigidMotionsAtTheContact) {
+  tri::TriangleMesh cube;
+  for (int i = 0; i < 8; ++i)
+    cube.vertices.emplace_back(0.002 * (i & 1), 0.002 * ((i >> 1) & 1), 0.002 * ((i >> 2) & 1));
+  cube.triangles = {{0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}, {0, 1, 5}, {0, 5, 4},
+                    {2, 6, 7}, {2, 7, 3}, {0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}};
+  const tri::Shape s = tri::make_shape("cube", cube);
+  Particle p;
+  const Vector3d x(0.0, 0.0, 0.001 + kEps); // bottom face 1 eps above z = 0: in contact
+  tri::transform_soa(s.soa, Eigen::Matrix3d::Identity(), x, p.world);
+  p.body.triangles = &p.world;
+  p.body.epsilon = kEps;
+  p.body.longest_edge = s.max_edge_length;
+  p.body.min_edge = s.min_edge_length;
+  p.body.state.x = x;
+  p.body.state.mass = 1e-5;
+
+  // The patch: two triangles of the plane z = 0 around the cube, far from the axis x = -0.1.
+  tri::TriangleSoA patch;
+  patch.resize(2);
+  const Vector3d c0(-0.01, -0.01, 0), c1(0.01, -0.01, 0), c2(0.01, 0.01, 0), c3(-0.01, 0.01, 0);
+  patch.set_vertex(0, 0, c0);
+  patch.set_vertex(0, 1, c1);
+  patch.set_vertex(0, 2, c2);
+  patch.set_vertex(1, 0, c0);
+  patch.set_vertex(1, 1, c2);
+  patch.set_vertex(1, 2, c3);
+  tri::Body wall;
+  wall.triangles = &patch;
+  wall.epsilon = kEps;
+  wall.longest_edge = std::numeric_limits<double>::infinity();
+  wall.min_edge = p.body.min_edge;
+  // Spinning about the z axis through (-0.1, 0.3, 0) at 0.5 rad/s; centre of the motion at the
+  // patch's mean, as fit_rigid_motion gives it.
+  const Vector3d axis_point(-0.1, 0.3, 0), omega(0, 0, 0.5);
+  wall.state.x = Vector3d::Zero();
+  wall.state.v = omega.cross(wall.state.x - axis_point);
+  wall.state.omega = omega;
+  wall.state.mass = 0.0;
+
+  tri::InteractionSettings st = settings();
+  st.coefficients.tangential = tri::TangentialModel::no_history;
+  tri::InteractionScratch scratch;
+  tri::ContactStats stats;
+  const tri::PairForceResult r =
+      tri::body_interaction(p.body, wall, st, 1e-6, nullptr, scratch, stats);
+  ASSERT_GT(r.contacts_after, 0);
+  ASSERT_GT(r.force_a.z(), 0.0); // pushed up
+  const Vector3d surface = omega.cross(Vector3d(0, 0, 0) - axis_point); // under the cube
+  const Vector3d drag(r.force_a.x(), r.force_a.y(), 0.0);
+  ASSERT_GT(drag.norm(), 0.0);
+  EXPECT_GT(drag.normalized().dot(surface.normalized()), 1.0 - 1e-9);
+}
