@@ -3,7 +3,8 @@
 at the drum's surface velocity, omega x r at its position, and it turns with the drum. The
 wall's velocity at the contact comes from the rigid motion fitted to the wall patch's node
 velocities (src_plugin/kernel/rigid_motion.h); the mean of the node velocities, which the wall
-used before, is off by omega x (contact - patch mean). Standard library only.
+used before, is off by omega x (contact - patch mean): 0.52 % of the motion here, against
+0.011 % now. Standard library only.
 
 usage: drum_test.py --exe LIGGGHTS_TRI --work DIR
 """
@@ -87,8 +88,9 @@ def main():
           f"{spin:.4f} rad/s of {omega:.4f}")
     if not moved > 1e-3:
         failures.append(f"the drum moved the cube only {moved:.3g} m: nothing to compare")
-    if miss > 0.01 * moved:
-        failures.append(f"the cube missed the drum's motion by {miss / moved:.3%} of it (> 1 %)")
+    # 0.1 %: the mean node velocity of the patch (the wall's velocity before) missed by 0.52 %.
+    if miss > 1e-3 * moved:
+        failures.append(f"the cube missed the drum's motion by {miss / moved:.3%} of it (> 0.1 %)")
     if abs(spin - omega) > 0.03 * omega:
         failures.append(f"mean spin {spin:.4f} rad/s, the drum's {omega:.4f} (> 3 % off)")
     for f in failures:
