@@ -280,11 +280,6 @@ DENSITY = 2500.0
 BOX_HALF, BOX_HEIGHT = 0.0045, 0.02   # box.stl of the cluster decks
 
 
-def f32(v):
-    """VTK's STL reader stores coordinates as float: the mesh is the float-rounded one."""
-    return struct.unpack("f", struct.pack("f", v))[0]
-
-
 def make_contact_meshes(work):
     subprocess.run([sys.executable, MESHGEN, "cube", "2", repr(SIDE), "cube.stl"], cwd=work,
                    check=True)
@@ -331,7 +326,7 @@ MAT = {"kn": 2000.0, "kt": 1000.0, "gamman": 20.0, "gammat": 10.0, "mu": 0.5}
 def test_contact_forces(ctx):
     """Forces and torques of one evaluation (run 0) against hand-computed values."""
     make_contact_meshes(ctx.work)
-    h = f32(SIDE / 2)                   # half side of the mesh as read
+    h = SIDE / 2                        # half side of the mesh as read (ASCII STL: doubles)
     mass = DENSITY * (2 * h) ** 3
     kn, kt, gn, gt, mu = (MAT[k] for k in ("kn", "kt", "gamman", "gammat", "mu"))
     dt = 1e-5
