@@ -2,6 +2,7 @@
 
 #include "approach_speed.h"
 #include "fix_tri_wall.h"
+#include "incompatible_styles.h"
 #include "pair_tri_gran.h"
 #include "particle_options.h"
 #include "step_tally.h"
@@ -340,6 +341,7 @@ void FixTriParticles::apply_mass_and_radius(int i) {
 }
 
 void FixTriParticles::init() {
+  tri_liggghts::refuse_incompatible_styles(lmp, id);
   initialise_unset_atoms();
   for (int i = 0; i < atom->nlocal; ++i)
     apply_mass_and_radius(i);
