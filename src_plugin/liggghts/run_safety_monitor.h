@@ -21,6 +21,7 @@ public:
   RunSafetyMonitor(LAMMPS_NS::LAMMPS *lmp, double epsilon) : lmp_(lmp), epsilon_(epsilon) {}
   // A run continued from a restart file: intersections come from the dynamics, not set-up.
   void skip_initial_check() { initial_checked_ = true; }
+  void set_epsilon(double epsilon) { epsilon_ = epsilon; } // `epsilon auto`, once resolved
   // After the pair forces (post_force of fix tri/particles, before the second half-kick: v is
   // still the velocity that carried the particles into this step's positions).
   void after_pair_forces(const ContactBoard &board);
