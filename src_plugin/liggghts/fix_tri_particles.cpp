@@ -55,6 +55,8 @@ FixTriParticles::FixTriParticles(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, n
   const tri_liggghts::ParticleOptions opt = tri_liggghts::parse_particle_options(narg, arg, 3, error);
   density_ = opt.density;
   epsilon_ = opt.epsilon;
+  epsilon_auto_ = opt.epsilon_auto;
+  check_timestep_every_ = opt.check_timestep_every;
   assign_by_type_ = opt.assign_by_type;
   assign_seed_ = opt.assign_seed;
   orient_random_ = opt.orient_random;
@@ -96,7 +98,11 @@ int FixTriParticles::setmask() { return PRE_FORCE | POST_FORCE | END_OF_STEP; }
 void FixTriParticles::post_force(int) { monitor_->after_pair_forces(board_); }
 
 // After every fix tri/wall has added its forces.
-void FixTriParticles::end_of_step() { monitor_->end_of_step(board_); }
+void FixTriParticles::end_of_step() {
+  monitor_->end_of_step(board_);
+  if (check_timestep_every_ > 0 && update->ntimestep % check_timestep_every_ == 0)
+    tri_liggghts::check_timestep(lmp, board_, type_bodies(), epsilon_, false);
+}
 
 // A source removed between runs (unfix, another pair_style) leaves nothing behind; the
 // sources of the next run join again in their init().
@@ -147,7 +153,51 @@ void FixTriParticles::init() {
 
 void FixTriParticles::setup_pre_force(int) {
   monitor_->new_run();
+  if (epsilon_auto_ && !epsilon_resolved_)
+    error->all(FLERR, "Fix tri/particles: 'epsilon' is required here: 'epsilon auto' (the "
+                      "default) sizes the soft layer from the contact material, and no pair "
+                      "tri/gran or fix tri/wall published one for the particles present");
   pre_force(0);
+}
+
+// After the setup force evaluation: the time-step check sees the published neighbour list.
+void FixTriParticles::setup(int) {
+  if (check_timestep_every_ >= 0)
+    tri_liggghts::check_timestep(lmp, board_, type_bodies(), epsilon_, true);
+}
+
+tri_liggghts::TypeBodies FixTriParticles::type_bodies() const {
+  return tri_liggghts::type_bodies(lmp, shapes_, density_, assign_by_type_);
+}
+
+void FixTriParticles::resolve_epsilon() {
+  if (!epsilon_auto_ || epsilon_resolved_)
+    return;
+  const tri_liggghts::AutoEpsilon chosen =
+      tri_liggghts::choose_auto_epsilon(lmp, board_, type_bodies());
+  if (!chosen.found)
+    return;
+  epsilon_ = chosen.epsilon;
+  epsilon_resolved_ = true;
+  monitor_->set_epsilon(epsilon_);
+  tri_liggghts::check_shapes_against_epsilon(lmp, shapes_, epsilon_);
+  for (int i = 0; i < atom->nlocal; ++i)
+    if (state_[i][kShape] != kUnset)
+      apply_mass_and_radius(i);
+  if (comm->me == 0) {
+    char line[600];
+    std::snprintf(line, sizeof line,
+                  "tri/particles: epsilon auto = %g m (peak overlap v sqrt(meff / kn) of a "
+                  "head-on contact at the characteristic velocity %g m/s: %s, types %d and %d%s, "
+                  "meff %g kg, kn %g N/m, gives %g m = %g of the two soft layers)\n",
+                  epsilon_, chosen.speed, chosen.source.c_str(), chosen.itype, chosen.jtype,
+                  chosen.wall ? " (wall)" : "", chosen.meff, chosen.kn, chosen.overlap,
+                  tri::kAutoEpsilonFraction);
+    if (screen)
+      std::fputs(line, screen);
+    if (logfile)
+      std::fputs(line, logfile);
+  }
 }
 
 void FixTriParticles::pre_force(int) {

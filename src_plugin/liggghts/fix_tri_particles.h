@@ -19,6 +19,7 @@
 
 #include "body_interaction.h"
 #include "contact_board.h"
+#include "material_scales.h"
 #include "run_safety_monitor.h"
 #include "shape.h"
 #include "triangle_soa.h"
@@ -43,6 +44,7 @@ public:
   int setmask() override;
   void init() override;
   void setup_pre_force(int) override;
+  void setup(int) override;
   void pre_force(int) override;
   void post_force(int) override;
   void end_of_step() override;
@@ -84,6 +86,12 @@ public:
   // Principal moments of atom i, kg m^2, scaled with its rmass (so `set mass` stays consistent).
   Eigen::Vector3d principal_inertia(int i) const;
   double epsilon() const { return epsilon_; }
+  // `epsilon auto`: a contact style calls this at its init, after publishing its material on
+  // the board, before anything is sized from the radii (material_scales.h). Sets epsilon and
+  // the radii once; a no-op with an explicit epsilon or once resolved.
+  void resolve_epsilon();
+  // The bodies each atom type can be (its shapes), for the contact styles' materials.
+  tri_liggghts::TypeBodies type_bodies() const;
   // Where the contact styles publish, and their readers read (contact_board.h).
   tri_liggghts::ContactBoard &board() { return board_; }
   // World-frame triangles of owned and ghost atom i, as of the last pre_force.
@@ -98,6 +106,8 @@ private:
   std::vector<tri::Shape> shapes_;
   std::vector<tri::TriangleSoA> world_;
   double density_ = 0.0, epsilon_ = 0.0;
+  bool epsilon_auto_ = false, epsilon_resolved_ = false;
+  int check_timestep_every_ = 0; // -1 off, 0 at setup, N: also every N steps
   bool assign_by_type_ = false, orient_random_ = false;
   std::uint64_t assign_seed_ = 0, orient_seed_ = 0;
   double **state_ = nullptr;

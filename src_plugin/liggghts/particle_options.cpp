@@ -110,6 +110,35 @@ ShapeSpec parse_shape(ArgReader &in) {
   return s;
 }
 
+double epsilon_value(ArgReader &in) {
+  if (in.done())
+    in.word("value after 'epsilon'");
+  const std::string s = in.peek();
+  char *end = nullptr;
+  errno = 0;
+  const double v = std::strtod(s.c_str(), &end);
+  if (s.empty() || end == s.c_str() || *end != '\0' || errno == ERANGE || !std::isfinite(v))
+    in.fail("'epsilon' expects a number (m) or 'auto', got '" + s + "'");
+  in.word("epsilon");
+  if (!(v > 0.0))
+    in.fail("'epsilon' must be > 0");
+  return v;
+}
+
+int check_timestep_value(ArgReader &in) {
+  const std::string s = in.word("'setup', 'off' or a number of steps after 'check_timestep'");
+  if (s == "setup")
+    return 0;
+  if (s == "off")
+    return -1;
+  char *end = nullptr;
+  errno = 0;
+  const long long n = std::strtoll(s.c_str(), &end, 10);
+  if (end == s.c_str() || *end != '\0' || errno == ERANGE || n <= 0 || n > 1000000000)
+    in.fail("'check_timestep' expects setup, off or a positive number of steps, got '" + s + "'");
+  return static_cast<int>(n);
+}
+
 } // namespace
 
 ParticleOptions parse_particle_options(int narg, char **arg, int first, LAMMPS_NS::Error *error) {
@@ -143,10 +172,17 @@ ParticleOptions parse_particle_options(int narg, char **arg, int first, LAMMPS_N
         in.fail("'density' must be > 0");
       have_density = true;
     } else if (key == "epsilon") {
-      o.epsilon = in.real("epsilon");
-      if (!(o.epsilon > 0.0))
-        in.fail("'epsilon' must be > 0");
+      if (in.peek() == "auto") {
+        in.word("auto");
+        o.epsilon_auto = true;
+        o.epsilon = 0.0;
+      } else {
+        o.epsilon = epsilon_value(in);
+        o.epsilon_auto = false;
+      }
       have_epsilon = true;
+    } else if (key == "check_timestep") {
+      o.check_timestep_every = check_timestep_value(in);
     } else if (key == "orient") {
       const std::string mode = in.word("'random SEED' or 'none' after 'orient'");
       if (mode == "none") {
@@ -169,7 +205,7 @@ ParticleOptions parse_particle_options(int narg, char **arg, int first, LAMMPS_N
   if (!have_density)
     in.fail("'density' is required");
   if (!have_epsilon)
-    in.fail("'epsilon' is required");
+    o.epsilon_auto = true; // resolved from the contact material (material_scales.h)
   return o;
 }
 
