@@ -12,7 +12,6 @@ import math
 import os
 import re
 import shutil
-import struct
 import subprocess
 import sys
 
@@ -30,13 +29,9 @@ def check(cond, message):
         raise Failure(message)
 
 
-def f32(v):
-    """VTK's STL reader stores coordinates as float."""
-    return struct.unpack("f", struct.pack("f", v))[0]
-
-
-# The cube of the decks as read: side 2h, density 2500 (in.materials).
-H = f32(0.002)
+# The cube of the decks as read (ASCII STL: doubles, all digits): side 2h, density 2500
+# (in.materials).
+H = 0.002
 VOLUME = (2 * H) ** 3
 MASS = 2500.0 * VOLUME
 R_EQ = (3 * VOLUME / (4 * math.pi)) ** (1.0 / 3.0)
