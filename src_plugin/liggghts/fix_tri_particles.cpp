@@ -57,6 +57,7 @@ FixTriParticles::FixTriParticles(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, n
   assign_seed_ = opt.assign_seed;
   orient_random_ = opt.orient_random;
   orient_seed_ = opt.orient_seed;
+  orient_file_ = opt.orient_file;
 
   shapes_ = tri_liggghts::build_shapes(lmp, opt);
   monitor_ = std::make_unique<tri_liggghts::RunSafetyMonitor>(lmp, epsilon_);
@@ -108,8 +109,9 @@ void FixTriParticles::initialise_atom(int i) {
   else if (num_shapes() > 1)
     s = tri::seeded_index(assign_seed_, tag, num_shapes());
   state_[i][kShape] = s;
-  const Eigen::Quaterniond q =
-      orient_random_ ? tri::random_orientation(orient_seed_, tag) : Eigen::Quaterniond::Identity();
+  const Eigen::Quaterniond q = orient_random_ ? tri::random_orientation(orient_seed_, tag)
+                               : orient_file_ ? shapes_[s].input_orientation
+                                              : Eigen::Quaterniond::Identity();
   set_orientation(i, q);
   set_angular_momentum(i, Eigen::Vector3d::Zero());
   std::fill(pending_[i], pending_[i] + kPending, 0.0);

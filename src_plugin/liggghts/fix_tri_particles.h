@@ -98,7 +98,7 @@ private:
   std::vector<tri::Shape> shapes_;
   std::vector<tri::TriangleSoA> world_;
   double density_ = 0.0, epsilon_ = 0.0;
-  bool assign_by_type_ = false, orient_random_ = false;
+  bool assign_by_type_ = false, orient_random_ = false, orient_file_ = false;
   std::uint64_t assign_seed_ = 0, orient_seed_ = 0;
   double **state_ = nullptr;
   double **pending_ = nullptr; // per atom: f(3), torque(3), flag

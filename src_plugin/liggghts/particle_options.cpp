@@ -148,17 +148,19 @@ ParticleOptions parse_particle_options(int narg, char **arg, int first, LAMMPS_N
         in.fail("'epsilon' must be > 0");
       have_epsilon = true;
     } else if (key == "orient") {
-      const std::string mode = in.word("'random SEED' or 'none' after 'orient'");
-      if (mode == "none") {
+      const std::string mode = in.word("'random SEED', 'none' or 'file' after 'orient'");
+      if (mode == "none" || mode == "file") {
         o.orient_random = false;
+        o.orient_file = mode == "file";
       } else if (mode == "random") {
         const long long seed = in.integer("orient random");
         if (seed < 0)
           in.fail("'orient random' seed must be >= 0");
         o.orient_random = true;
+        o.orient_file = false;
         o.orient_seed = static_cast<std::uint64_t>(seed);
       } else {
-        in.fail("'orient' expects 'random SEED' or 'none', got '" + mode + "'");
+        in.fail("'orient' expects 'random SEED', 'none' or 'file', got '" + mode + "'");
       }
     } else {
       in.fail("unknown keyword '" + key + "'");

@@ -3,7 +3,8 @@
 //   fix ID all tri/particles shape NAME random ntri N size D seed S [aspect B C] ...
 //                            shape NAME file PATH [scale F] ...
 //                            [assign random SEED | assign type]
-//                            density RHO epsilon EPS [orient random SEED | orient none]
+//                            density RHO epsilon EPS [orient random SEED | orient none |
+//                                                     orient file]
 #pragma once
 
 #include <cstdint>
@@ -37,6 +38,7 @@ struct ParticleOptions {
   double epsilon = 0.0;           // soft-layer width, m
   bool orient_random = false;
   std::uint64_t orient_seed = 0;
+  bool orient_file = false;       // start in the input (file or generator) frame
 };
 
 // Parses arg[first..narg) of the fix command. Every problem ends in error->all naming the
