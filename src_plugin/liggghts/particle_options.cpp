@@ -117,6 +117,7 @@ ParticleOptions parse_particle_options(int narg, char **arg, int first, LAMMPS_N
   ParticleOptions o;
   bool have_density = false, have_epsilon = false;
   std::set<std::string> names;
+  std::vector<std::pair<std::string, std::string>> templates; // shapes may come later
   while (!in.done()) {
     const std::string key = in.word("keyword");
     if (key == "shape") {
@@ -162,6 +163,13 @@ ParticleOptions parse_particle_options(int narg, char **arg, int first, LAMMPS_N
       } else {
         in.fail("'orient' expects 'random SEED', 'none' or 'file', got '" + mode + "'");
       }
+    } else if (key == "template") {
+      const std::string id = in.word("fix particletemplate/sphere ID after 'template'");
+      const std::string shape = in.word("shape name after 'template " + id + "'");
+      for (const auto &t : templates)
+        if (t.first == id)
+          in.fail("'template " + id + "' is given twice");
+      templates.emplace_back(id, shape);
     } else {
       in.fail("unknown keyword '" + key + "'");
     }
@@ -172,6 +180,15 @@ ParticleOptions parse_particle_options(int narg, char **arg, int first, LAMMPS_N
     in.fail("'density' is required");
   if (!have_epsilon)
     in.fail("'epsilon' is required");
+  for (const auto &[id, shape] : templates) {
+    int index = -1;
+    for (std::size_t k = 0; k < o.shapes.size(); ++k)
+      if (o.shapes[k].name == shape)
+        index = static_cast<int>(k);
+    if (index < 0)
+      in.fail("'template " + id + " " + shape + "': no shape is named '" + shape + "'");
+    o.templates.emplace_back(id, index);
+  }
   return o;
 }
 

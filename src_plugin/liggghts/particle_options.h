@@ -3,12 +3,14 @@
 //   fix ID all tri/particles shape NAME random ntri N size D seed S [aspect B C] ...
 //                            shape NAME file PATH [scale F] ...
 //                            [assign random SEED | assign type]
+//                            [template TEMPLATE_ID SHAPE_NAME] ...
 //                            density RHO epsilon EPS [orient random SEED | orient none |
 //                                                     orient file]
 #pragma once
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -39,6 +41,9 @@ struct ParticleOptions {
   bool orient_random = false;
   std::uint64_t orient_seed = 0;
   bool orient_file = false;       // start in the input (file or generator) frame
+  // `template ID SHAPE`: particles inserted from fix particletemplate/sphere ID get the shape
+  // of that index (particle_insertion.h). In the order given; IDs and shapes checked here.
+  std::vector<std::pair<std::string, int>> templates;
 };
 
 // Parses arg[first..narg) of the fix command. Every problem ends in error->all naming the
