@@ -1,6 +1,7 @@
 #include "fix_tri_particles.h"
 
 #include "incompatible_styles.h"
+#include "particle_insertion.h"
 #include "particle_options.h"
 #include "shape_builder.h"
 
@@ -36,7 +37,9 @@ namespace {
 constexpr int kShape = 0, kQuat = 1, kAngmom = 5;
 // pending_ columns
 constexpr int kForce = 0, kTorque = 3, kFlag = 6;
-constexpr double kUnset = -1.0;
+constexpr double kUnset = -1.0; // shape by the assign rule once the atom has a tag
+// -2 - s: inserted by a template with shape s, initialised once the atom has a tag
+double inserted_with(int s) { return -2.0 - s; }
 
 } // namespace
 
@@ -61,6 +64,8 @@ FixTriParticles::FixTriParticles(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, n
   assign_seed_ = opt.assign_seed;
   orient_random_ = opt.orient_random;
   orient_seed_ = opt.orient_seed;
+  orient_file_ = opt.orient_file;
+  templates_ = opt.templates;
 
   shapes_ = tri_liggghts::build_shapes(lmp, opt);
   monitor_ = std::make_unique<tri_liggghts::RunSafetyMonitor>(lmp, epsilon_);
@@ -71,7 +76,7 @@ FixTriParticles::FixTriParticles(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, n
   restart_global = 1;
   restart_peratom = 1;
   create_attribute = 1;
-  comm_forward = 4; // quaternion
+  comm_forward = 5; // shape + quaternion (the shape of atoms initialised in this pre_force)
   comm_border = 5;  // shape + quaternion
 
   grow_arrays(atom->nmax);
@@ -83,6 +88,8 @@ FixTriParticles::FixTriParticles(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, n
     initialise_atom(i);
     apply_mass_and_radius(i);
   }
+  // Templates defined before this fix get their shapes now (later ones in their constructor).
+  tri_liggghts::bind_templates(lmp, *this);
 }
 
 FixTriParticles::~FixTriParticles() {
@@ -108,16 +115,17 @@ void FixTriParticles::end_of_step() {
 // sources of the next run join again in their init().
 void FixTriParticles::post_run() { board_.clear_sources(); }
 
-void FixTriParticles::initialise_atom(int i) {
+void FixTriParticles::initialise_atom(int i, int shape) {
   const auto tag = static_cast<std::uint64_t>(atom->tag[i]);
-  int s = 0;
-  if (assign_by_type_)
-    s = atom->type[i] - 1;
-  else if (num_shapes() > 1)
-    s = tri::seeded_index(assign_seed_, tag, num_shapes());
+  int s = shape;
+  if (s < 0)
+    s = assign_by_type_    ? atom->type[i] - 1
+        : num_shapes() > 1 ? tri::seeded_index(assign_seed_, tag, num_shapes())
+                           : 0;
   state_[i][kShape] = s;
-  const Eigen::Quaterniond q =
-      orient_random_ ? tri::random_orientation(orient_seed_, tag) : Eigen::Quaterniond::Identity();
+  const Eigen::Quaterniond q = orient_random_ ? tri::random_orientation(orient_seed_, tag)
+                               : orient_file_ ? shapes_[s].input_orientation
+                                              : Eigen::Quaterniond::Identity();
   set_orientation(i, q);
   set_angular_momentum(i, Eigen::Vector3d::Zero());
   std::fill(pending_[i], pending_[i] + kPending, 0.0);
@@ -126,14 +134,24 @@ void FixTriParticles::initialise_atom(int i) {
 int FixTriParticles::initialise_unset_atoms() {
   int count = 0;
   for (int i = 0; i < atom->nlocal; ++i)
-    if (state_[i][kShape] == kUnset) {
+    if (state_[i][kShape] < 0.0) {
       if (atom->tag[i] <= 0)
         error->one(FLERR, "Fix tri/particles: an atom without an ID cannot be given a shape");
-      initialise_atom(i);
+      const double mark = state_[i][kShape];
+      initialise_atom(i, mark == kUnset ? -1 : static_cast<int>(-2.0 - mark));
       apply_mass_and_radius(i);
+      // A spin given on insertion (fix insert/* `omega`) is the particle's.
+      const Eigen::Vector3d w(atom->omega[i][0], atom->omega[i][1], atom->omega[i][2]);
+      if (w != Eigen::Vector3d::Zero())
+        set_angular_momentum(i, tri::angmom_from_omega(orientation(i), w, principal_inertia(i)));
       ++count;
     }
   return count;
+}
+
+void FixTriParticles::set_inserted_shape(int i, int shape) {
+  if (i >= 0 && i < atom->nlocal && shape >= 0 && shape < num_shapes() && state_[i][kShape] < 0.0)
+    state_[i][kShape] = inserted_with(shape);
 }
 
 void FixTriParticles::apply_mass_and_radius(int i) {
@@ -146,6 +164,7 @@ void FixTriParticles::apply_mass_and_radius(int i) {
 
 void FixTriParticles::init() {
   tri_liggghts::refuse_incompatible_styles(lmp, id);
+  tri_liggghts::check_insertion(lmp, *this);
   initialise_unset_atoms();
   for (int i = 0; i < atom->nlocal; ++i)
     apply_mass_and_radius(i);
@@ -327,18 +346,18 @@ int FixTriParticles::unpack_border(int n, int first, double *buf) {
 int FixTriParticles::pack_comm(int n, int *list, double *buf, int, int *) {
   int m = 0;
   for (int k = 0; k < n; ++k) {
-    const double *q = state_[list[k]] + kQuat;
-    for (int v = 0; v < 4; ++v)
-      buf[m++] = q[v];
+    const double *s = state_[list[k]];
+    for (int v = 0; v < 5; ++v)
+      buf[m++] = s[v];
   }
-  return 4; // LIGGGHTS 3.8: values per atom, the caller multiplies
+  return 5; // LIGGGHTS 3.8: values per atom, the caller multiplies
 }
 
 void FixTriParticles::unpack_comm(int n, int first, double *buf) {
   int m = 0;
   for (int i = first; i < first + n; ++i)
-    for (int v = 0; v < 4; ++v)
-      state_[i][kQuat + v] = buf[m++];
+    for (int v = 0; v < 5; ++v)
+      state_[i][v] = buf[m++];
 }
 
 int FixTriParticles::pack_restart(int i, double *buf) {

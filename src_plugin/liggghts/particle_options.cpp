@@ -146,6 +146,7 @@ ParticleOptions parse_particle_options(int narg, char **arg, int first, LAMMPS_N
   ParticleOptions o;
   bool have_density = false, have_epsilon = false;
   std::set<std::string> names;
+  std::vector<std::pair<std::string, std::string>> templates; // shapes may come later
   while (!in.done()) {
     const std::string key = in.word("keyword");
     if (key == "shape") {
@@ -184,18 +185,27 @@ ParticleOptions parse_particle_options(int narg, char **arg, int first, LAMMPS_N
     } else if (key == "check_timestep") {
       o.check_timestep_every = check_timestep_value(in);
     } else if (key == "orient") {
-      const std::string mode = in.word("'random SEED' or 'none' after 'orient'");
-      if (mode == "none") {
+      const std::string mode = in.word("'random SEED', 'none' or 'file' after 'orient'");
+      if (mode == "none" || mode == "file") {
         o.orient_random = false;
+        o.orient_file = mode == "file";
       } else if (mode == "random") {
         const long long seed = in.integer("orient random");
         if (seed < 0)
           in.fail("'orient random' seed must be >= 0");
         o.orient_random = true;
+        o.orient_file = false;
         o.orient_seed = static_cast<std::uint64_t>(seed);
       } else {
-        in.fail("'orient' expects 'random SEED' or 'none', got '" + mode + "'");
+        in.fail("'orient' expects 'random SEED', 'none' or 'file', got '" + mode + "'");
       }
+    } else if (key == "template") {
+      const std::string id = in.word("fix particletemplate/sphere ID after 'template'");
+      const std::string shape = in.word("shape name after 'template " + id + "'");
+      for (const auto &t : templates)
+        if (t.first == id)
+          in.fail("'template " + id + "' is given twice");
+      templates.emplace_back(id, shape);
     } else {
       in.fail("unknown keyword '" + key + "'");
     }
@@ -206,6 +216,15 @@ ParticleOptions parse_particle_options(int narg, char **arg, int first, LAMMPS_N
     in.fail("'density' is required");
   if (!have_epsilon)
     o.epsilon_auto = true; // resolved from the contact material (material_scales.h)
+  for (const auto &[id, shape] : templates) {
+    int index = -1;
+    for (std::size_t k = 0; k < o.shapes.size(); ++k)
+      if (o.shapes[k].name == shape)
+        index = static_cast<int>(k);
+    if (index < 0)
+      in.fail("'template " + id + " " + shape + "': no shape is named '" + shape + "'");
+    o.templates.emplace_back(id, index);
+  }
   return o;
 }
 
