@@ -82,8 +82,8 @@ const Row fix_table[] = {
     {"check/timestep/gran",
      "it estimates the Rayleigh and Hertz times of spheres from pair "
      "gran's material",
-     "fix tri/adapt_dt (and fix tri/particles itself stops a run whose time step is too large "
-     "for the soft layer)"},
+     "the time-step check of fix tri/particles (check_timestep setup|N, on at every run by "
+     "default) and fix tri/adapt_dt"},
     {"adapt",
      "it changes the atoms' radius or pair coefficients, while fix tri/particles sets "
      "radius := bounding radius + epsilon and rmass := density x volume",
@@ -121,8 +121,8 @@ const Row compute_table[] = {
 };
 
 const char *kPairReplacement =
-    "pair_style tri/gran (material: fix property/global kn, kt, gamman, gammat and "
-    "coefficientFriction, as for pair gran model hooke/stiffness)";
+    "pair_style tri/gran model hooke|hertz|hooke/stiffness (the same fix property/global "
+    "materials as pair gran)";
 
 const Row pair_table[] = {
     {"gran",
