@@ -233,6 +233,7 @@ def snapshots(path):
             for l in lines[k + 9:k + 9 + n]:
                 fields = l.split()
                 rows[int(fields[0])] = fields[1:]
+            check(len(rows) == n, f"{path}, step {step}: {len(rows)} atom rows of {n}")
             out.append((step, rows))
             k += 9 + n
         else:

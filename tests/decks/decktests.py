@@ -120,6 +120,7 @@ def main():
     os.makedirs(ctx.work)
     try:
         tests[ctx.test](ctx)
+        decklib.check(decklib.checks_made() > 0, "the test made no check")
     except decklib.Failure as e:
         print(f"FAIL {ctx.test}: {e}")
         return 1

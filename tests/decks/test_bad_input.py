@@ -24,6 +24,7 @@ def make_bad_meshes(work):
 def expect_errors(ctx, cases):
     """cases: {name: (deck, variables, pattern)}. Runs every case through expect_error and fails
     once, listing every case that did not stop with its error."""
+    check(cases, "no cases")
     failures = []
     for name, (deck, variables, pattern) in sorted(cases.items()):
         try:

@@ -40,8 +40,10 @@ def test_contact_forces(ctx):
                  gamman=gamman, gammat=gammat, pairargs=f"kernel {kernel}")
         run_deck(ctx, "in.contact_pair", v)
         step, rows = last_frame(os.path.join(ctx.work, "contact.dump"))
-        check(step == 0 and len(rows) == 2, f"{name}: frame at step {step} with {len(rows)} atoms")
+        check(step == 0 and set(rows) == {1, 2},
+              f"{name}: frame at step {step} with atoms {sorted(rows)}")
         a, b = ([float(x) for x in rows[t]] for t in (1, 2))
+        check(len(a) == len(b) == 10, f"{name}: {len(a)} columns, expected 10")
         check(abs(a[9] - mass) <= 1e-12 * mass, f"{name}: mass {a[9]!r}, cube gives {mass!r}")
         fa, fb, ta, tb = a[3:6], b[3:6], a[6:9], b[6:9]
         # Expected (n = +x from a to b): F_n = kn overlap - gamman m_eff v_n on b, friction
@@ -78,7 +80,10 @@ def test_contact_forces(ctx):
         run_deck(ctx, "in.contact_wall", dict(MAT, zc=repr(zc), vz=vz, gamman=gamman,
                                                wallargs=args))
         step, rows = last_frame(os.path.join(ctx.work, "contact.dump"))
+        check(step == 0 and set(rows) == {1}, f"{name}: frame at step {step} with atoms "
+                                              f"{sorted(rows)}")
         a = [float(x) for x in rows[1]]
+        check(len(a) == 10, f"{name}: {len(a)} columns, expected 10")
         f, t = a[3:6], a[6:9]
         overlap = EPS + (eps_wall or EPS) - gap
         # n from the particle to the wall is -z; v_n = (v_wall - v) . n = vz; m_eff = m.
@@ -107,7 +112,8 @@ ADAPT_LINE = re.compile(r"tri/adapt_dt: step (\d+): dt (\S+) -> (\S+) \((.*)\)")
 
 
 def test_stats_and_adapt_dt(ctx):
-    """compute tri/stats in thermo and fix tri/adapt_dt's rule on two approaching cubes."""
+    """compute tri/stats in thermo and fix tri/adapt_dt's rule on two approaching cubes. Thermo
+    every step, so that every halving is checked against the closest distance of its step."""
     make_contact_meshes(ctx.work)
     dtmax, dtmin, fraction = 2e-6, 2.5e-7, 0.2
     _, out = run_deck(ctx, "in.contact_adapt")
@@ -145,8 +151,9 @@ def test_stats_and_adapt_dt(ctx):
             check(abs(b - max(0.5 * a, dtmin)) <= 1e-5 * b, f"step {step}: {a} -> {b} is not "
                   "a halving bounded by dtmin")
             r = by_step.get(int(step))
-            check(r is None or r["dmin"] < fraction * EPS,
-                  f"step {step}: halved with the closest distance {r and r['dmin']}")
+            check(r is not None, f"step {step}: halved, but thermo has no row at that step")
+            check(r["dmin"] < fraction * EPS,
+                  f"step {step}: halved with the closest distance {r['dmin']}")
         else:
             raise Failure(f"unexpected reason '{why}'")
     check(halvings >= 3 and growths >= 8, f"{halvings} halvings, {growths} growths")
@@ -159,6 +166,7 @@ def test_stats_and_adapt_dt(ctx):
     check(any(int(s) > last_halving and w == "no contact" for s, _, _, w in lines),
           "dt did not grow again once the cubes separated")
     check(rows[-1]["adt[1]"] == dtmax, f"final dt {rows[-1]['adt[1]']!r}, expected dtmax")
-    print(f"{halvings} halvings, {growths} growths; closest distance {min(r['dmin'] for r in touching):.4g} m; contacts "
+    print(f"{halvings} halvings, {growths} growths (each halving checked against its thermo "
+          f"row); closest distance {min(r['dmin'] for r in touching):.4g} m; contacts "
           f"before/after reduction up to {max(r['stats.contacts_before'] for r in touching):g}/"
           f"{max(r['stats.contacts_after'] for r in touching):g}")

@@ -32,6 +32,7 @@ def test_threads(ctx):
                   f"{len(dumps[phase])} atoms")
     ref = dumps["pairs_t1"]
     for phase, rows in dumps.items():
+        check(set(rows) == set(ref), f"{phase}: atoms {sorted(rows)}, pairs_t1 {sorted(ref)}")
         for tag in ref:
             check(rows[tag] == ref[tag], f"atom {tag}: {phase} differs from pairs_t1:\n "
                   f"{rows[tag]}\n {ref[tag]}")
@@ -53,8 +54,12 @@ def test_restart_contacts(ctx):
     check(pairs_only > 0, "no rock-rock contact at the restart step: the test would not see "
                           "the pair history")
     check(total - pairs_only > 0, "no rock-wall contact at the restart step")
-    _, full = last_frame(os.path.join(ctx.work, CLUSTER_OUT.format("full")))
-    _, resumed = last_frame(os.path.join(ctx.work, CLUSTER_OUT.format("second")))
+    step_a, full = last_frame(os.path.join(ctx.work, CLUSTER_OUT.format("full")))
+    step_b, resumed = last_frame(os.path.join(ctx.work, CLUSTER_OUT.format("second")))
+    check(step_a == step_b == 2 * n, f"last frames at steps {step_a} and {step_b}, "
+                                     f"expected {2 * n}")
+    check(len(full) == 8 and set(resumed) == set(full),
+          f"atoms {sorted(full)} without the restart, {sorted(resumed)} after it")
     first_diff = [t for t in full if full[t] != resumed[t]]
     check(not first_diff, f"atoms {first_diff} differ after the restart, e.g. atom "
           f"{first_diff[:1]}:\n {full[first_diff[0]] if first_diff else ''}\n "
@@ -78,14 +83,14 @@ def compare_columns(serial, mpi, tol, what):
 
 def test_ranks_contacts(ctx):
     """1 and 2 MPI ranks (processors 2 1 1, boundary x = 0): a colliding pair across the
-    boundary and the cluster. Not bitwise: the rank that owns j evaluates the pair as (j, i),
-    and body_interaction(j, i) equals -body_interaction(i, j) only to rounding (measured 1e-15
-    relative after one collision); in the cluster the order of the force sums on an atom
-    differs too. Chaotic collisions amplify that, so the runs are short and the kernel of the
-    cluster is brute force: the hybrid kernel's accept/fallback decision can flip on a
-    last-bit difference and then moves a distance by up to its tolerance 1e-4 eps (measured:
-    1e-14 -> 4e-9 in one collision at step 1200). Tolerance: 1e-10 of each column's largest
-    magnitude."""
+    boundary and the cluster, bitwise equal. Pair tri/gran evaluates every pair as (lower tag,
+    higher tag) whichever rank owns which atom, and each atom's pair forces are summed in the
+    order of the partners' tags (wall contacts in the order of the wall triangles), so the
+    split changes no sum and the final dumps (%.17g) must be identical. Chaotic collisions would
+    amplify any last-bit difference (the hybrid kernel's accept/fallback decision can flip on
+    one and then move a distance by up to its tolerance 1e-4 eps), so the runs are short and
+    the cluster's kernel is brute force; the comparison within 1e-10 of each column's largest
+    magnitude runs first, so a failure says how far apart the runs are."""
     make_contact_meshes(ctx.work)
     tol = 1e-10
     outs = {}
@@ -105,10 +110,15 @@ def test_ranks_contacts(ctx):
     check(float(first[1][0]) < 0 < float(first[2][0]), "the pair does not start on both ranks")
     for what, natoms in (("collide", 2), ("cluster", 8)):
         serial, mpi = outs[(what, 1)], outs[(what, 2)]
-        check(len(serial) == len(mpi) == natoms, f"{what}: atoms were lost")
+        check(len(serial) == len(mpi) == natoms and set(serial) == set(mpi),
+              f"{what}: atoms were lost")
         sides = {float(r[0]) < 0 for r in serial.values()}
-        bitwise = all(serial[t] == mpi[t] for t in serial)
         worst = compare_columns(serial, mpi, tol, what)
-        print(f"{what}: 1 vs 2 ranks {'bitwise equal' if bitwise else 'not bitwise'}, "
-              f"largest relative difference {worst:.3g} (tolerance {tol:g}); atoms on "
-              f"{len(sides)} sides of x = 0 at the end")
+        different = [t for t in serial if serial[t] != mpi[t]]
+        verdict = f"not bitwise (atoms {different})" if different else "bitwise equal"
+        print(f"{what}: 1 vs 2 ranks {verdict}, largest relative difference {worst:.3g} "
+              f"(tolerance {tol:g}); atoms on {len(sides)} sides of x = 0 at the end")
+        check(not different, f"{what}: 1 and 2 ranks are not bitwise equal: atoms {different} "
+                             f"differ (largest relative difference {worst:.3g}), e.g. atom "
+                             f"{different[:1]}:\n {serial[different[0]] if different else ''}"
+                             f"\n {mpi[different[0]] if different else ''}")
