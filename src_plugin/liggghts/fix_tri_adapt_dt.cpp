@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <limits>
 #include <string>
 
@@ -28,6 +29,10 @@ FixTriAdaptDt::FixTriAdaptDt(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg,
   bool have_max = false, have_min = false;
   for (int i = 3; i < narg; i += 2) {
     const std::string key = arg[i];
+    if (key == "log" && i + 1 < narg && std::string(arg[i + 1]) == "all") {
+      log_window_ = 0;
+      continue;
+    }
     if (i + 1 >= narg) {
       const std::string msg = "Fix tri/adapt_dt: missing value after '" + key + "'";
       error->all(FLERR, msg.c_str());
@@ -49,6 +54,13 @@ FixTriAdaptDt::FixTriAdaptDt(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg,
       fraction_ = v;
     } else if (key == "approach") {
       approach_ = v;
+    } else if (key == "log") {
+      if (v != std::floor(v) || v > 1e12) {
+        const std::string msg = "Fix tri/adapt_dt: 'log' expects a number of steps or 'all', "
+                                "got '" + std::string(arg[i + 1]) + "'";
+        error->all(FLERR, msg.c_str());
+      }
+      log_window_ = static_cast<long>(v);
     } else if (key == "growth") {
       if (v <= 1.0)
         error->all(FLERR, "Fix tri/adapt_dt: 'growth' must be > 1");
@@ -79,17 +91,59 @@ void FixTriAdaptDt::init() {
     set_dt(std::min(std::max(update->dt, dtmin_), dtmax_), "outside [dtmin, dtmax]");
 }
 
+namespace {
+void write_line(FILE *screen, FILE *logfile, const char *line) {
+  if (screen)
+    std::fputs(line, screen);
+  if (logfile)
+    std::fputs(line, logfile);
+}
+} // namespace
+
+// One summary line for the changes of the window that were not written one by one.
+void FixTriAdaptDt::close_log_window(long long last_step) {
+  const long long quiet = window_.quiet_halvings + window_.quiet_growths + window_.quiet_limits;
+  if (quiet > 0 && comm->me == 0) {
+    char line[400];
+    std::snprintf(line, sizeof line,
+                  "tri/adapt_dt: steps %lld-%lld: %lld more changes not listed (%lld halvings, "
+                  "%lld growths, %lld approach bounds), dt between %g and %g, now %g\n",
+                  window_.first_step, last_step, quiet, window_.quiet_halvings,
+                  window_.quiet_growths, window_.quiet_limits, window_.dt_min, window_.dt_max,
+                  update->dt);
+    write_line(screen, logfile, line);
+  }
+  window_ = LogWindow{};
+}
+
+void FixTriAdaptDt::post_run() { close_log_window(update->ntimestep); }
+
 void FixTriAdaptDt::set_dt(double dt, const char *why) {
   if (dt == update->dt)
     return;
-  if (comm->me == 0) {
-    char line[256];
-    std::snprintf(line, sizeof line, "tri/adapt_dt: step " BIGINT_FORMAT ": dt %g -> %g (%s)\n",
-                  update->ntimestep, update->dt, dt, why);
-    if (screen)
-      std::fputs(line, screen);
-    if (logfile)
-      std::fputs(line, logfile);
+  const long long step = update->ntimestep;
+  if (log_window_ > 0 && window_.first_step >= 0 && step >= window_.first_step + log_window_)
+    close_log_window(step - 1);
+  if (window_.first_step < 0) {
+    window_.first_step = step;
+    window_.dt_min = window_.dt_max = update->dt;
+  }
+  window_.dt_min = std::min(window_.dt_min, dt);
+  window_.dt_max = std::max(window_.dt_max, dt);
+  if (log_window_ == 0 || window_.lines < kLinesPerWindow) {
+    ++window_.lines;
+    if (comm->me == 0) {
+      char line[256];
+      std::snprintf(line, sizeof line, "tri/adapt_dt: step " BIGINT_FORMAT ": dt %g -> %g (%s)\n",
+                    update->ntimestep, update->dt, dt, why);
+      write_line(screen, logfile, line);
+    }
+  } else if (std::strncmp(why, "approach", 8) == 0) {
+    ++window_.quiet_limits;
+  } else if (dt < update->dt) {
+    ++window_.quiet_halvings;
+  } else {
+    ++window_.quiet_growths;
   }
   update->update_time();
   update->dt = dt;
@@ -150,8 +204,37 @@ void FixTriAdaptDt::setup(int) {
   }
 }
 
+// Real surfaces intersect while dt cannot go lower: the soft layer is overrun for good.
+void FixTriAdaptDt::check_stuck(const tri::InteractionTally &t) {
+  stuck_steps_ = update->dt <= dtmin_ && t.penetrations > 0 ? stuck_steps_ + 1 : 0;
+  if (stuck_steps_ < kStuckSteps)
+    return;
+  const tri_liggghts::ContactBoard &board = particles_->board();
+  tri_liggghts::IntersectingPair p = board.first_intersecting(tri_liggghts::SourceKind::particle_pairs);
+  if (!p.found())
+    p = board.first_intersecting(tri_liggghts::SourceKind::walls);
+  double tags[2] = {double(p.tag_a), double(p.tag_b)}, found[2];
+  MPI_Allreduce(tags, found, 2, MPI_DOUBLE, MPI_MAX, world);
+  char who[120];
+  if (found[1] > 0.0)
+    std::snprintf(who, sizeof who, "e.g. particles %.0f and %.0f", found[0], found[1]);
+  else
+    std::snprintf(who, sizeof who, "e.g. particle %.0f and a wall", found[0]);
+  const double layer = 2.0 * particles_->epsilon();
+  char msg[700];
+  std::snprintf(msg, sizeof msg,
+                "Fix tri/adapt_dt: step " BIGINT_FORMAT ": dt has been at dtmin (%g s) for %d "
+                "steps while real surfaces intersect (%lld interaction(s), %s; deepest overlap "
+                "%g m = %.3g x the combined soft layer 2 epsilon): the contact force cannot push "
+                "them apart at this stiffness; use a stiffer kn, a wider epsilon, or a lower dtmin",
+                update->ntimestep, dtmin_, stuck_steps_, t.penetrations, who, t.max_overlap,
+                t.max_overlap / layer);
+  error->all(FLERR, msg);
+}
+
 void FixTriAdaptDt::end_of_step() {
   const tri::InteractionTally t = tri_liggghts::global_tally(particles_->board(), world);
+  check_stuck(t);
   double dt = update->dt;
   enum { keep, halve, grow } rule = keep;
   if (t.contacts_after > 0 && t.min_distance < fraction_ * particles_->epsilon()) {

@@ -12,7 +12,19 @@
 // particle may move more than half the neighbour skin (the pairs beyond the skin are not
 // listed yet). This bound may cut a growth short or lower dt at once, never below dtmin.
 //
+// Log: every change of dt is a line "tri/adapt_dt: step N: dt A -> B (why)", at most
+// kLinesPerWindow of them per window of `log` steps (default 1000); the changes past that are
+// counted and summed up in one line at the end of the window (how many of each rule, the
+// smallest and largest dt). `log all`: every change. A run that oscillates between two rules
+// therefore writes a few lines per thousand steps, not one a step.
+//
+// Stuck at dtmin: when dt has been at dtmin for kStuckSteps steps in a row while real surfaces
+// intersect (compute tri/stats' penetrations > 0), halving can no longer help: the run stops
+// with an error naming a pair (or a particle and a wall), the deepest overlap in units of the
+// combined soft layer, and what to change (a stiffer kn, a wider epsilon, a lower dtmin).
+//
 //   fix ID all tri/adapt_dt dtmax DT dtmin DT [fraction F] [growth G] [approach A]
+//                           [log N|all]
 //
 // f_ID[1] dt, [2] halvings, [3] growths, [4] steps whose dt the approach bound lowered.
 #pragma once
@@ -20,6 +32,10 @@
 #include "fix.h"
 
 #include <string>
+
+namespace tri {
+struct InteractionTally;
+}
 
 namespace LAMMPS_NS {
 
@@ -30,12 +46,26 @@ public:
   void init() override;
   void setup(int) override;
   void end_of_step() override;
+  void post_run() override;
   double compute_vector(int) override;
 
 private:
   class FixTriParticles *particles_ = nullptr;
   double dtmax_ = 0.0, dtmin_ = 0.0, fraction_ = 0.2, growth_ = 1.1, approach_ = 0.5;
   long long halvings_ = 0, growths_ = 0, limits_ = 0;
+  static constexpr int kLinesPerWindow = 10;
+  static constexpr int kStuckSteps = 10;
+  long log_window_ = 1000; // steps; 0: every change
+  // The current log window: its first step, the lines written, the changes not written.
+  struct LogWindow {
+    long long first_step = -1;
+    int lines = 0;
+    long long quiet_halvings = 0, quiet_growths = 0, quiet_limits = 0;
+    double dt_min = 0.0, dt_max = 0.0;
+  } window_;
+  int stuck_steps_ = 0; // consecutive steps at dtmin with intersecting surfaces
+  void close_log_window(long long last_step);
+  void check_stuck(const tri::InteractionTally &t);
   // The largest dt the approach bound allows now (same on every rank); if below `dt`, `why`
   // says which pair or particle sets it.
   double approach_limit(double dt, std::string &why) const;

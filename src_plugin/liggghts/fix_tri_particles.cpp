@@ -142,7 +142,10 @@ void FixTriParticles::init() {
     apply_mass_and_radius(i);
 }
 
-void FixTriParticles::setup_pre_force(int) { pre_force(0); }
+void FixTriParticles::setup_pre_force(int) {
+  monitor_->new_run();
+  pre_force(0);
+}
 
 void FixTriParticles::pre_force(int) {
   // Atoms inserted during a run (fix insert/pour) arrive unset; their tags exist by now.

@@ -39,6 +39,38 @@ void RunSafetyMonitor::end_of_step(const ContactBoard &board) {
   }
   find_unresolved_wall_contact(board);
   report_unresolved_contacts();
+  if (!warned_)
+    warn_first_penetration(board);
+}
+
+// One reduction of one count per step until the first intersection of the run.
+void RunSafetyMonitor::warn_first_penetration(const ContactBoard &board) {
+  long long mine = board.local(TallySource::all).penetrations, all = 0;
+  MPI_Allreduce(&mine, &all, 1, MPI_LONG_LONG, MPI_SUM, lmp_->world);
+  if (all == 0)
+    return;
+  warned_ = true;
+  const tri::InteractionTally t = global_tally(board, lmp_->world);
+  IntersectingPair p = board.first_intersecting(SourceKind::particle_pairs);
+  if (!p.found())
+    p = board.first_intersecting(SourceKind::walls);
+  double tags[2] = {double(p.tag_a), double(p.tag_b)}, found[2];
+  MPI_Allreduce(tags, found, 2, MPI_DOUBLE, MPI_MAX, lmp_->world);
+  char who[100];
+  if (found[1] > 0.0)
+    std::snprintf(who, sizeof who, "e.g. particles %.0f and %.0f", found[0], found[1]);
+  else
+    std::snprintf(who, sizeof who, "e.g. particle %.0f and a wall", found[0]);
+  char msg[600];
+  std::snprintf(msg, sizeof msg,
+                "tri/particles: step " BIGINT_FORMAT ": real surfaces intersect for the first "
+                "time in this run (%lld interaction(s), %s; deepest overlap %g m = %.3g x the "
+                "combined soft layer 2 epsilon): the soft layer is overrun; a stiffer kn, a wider "
+                "epsilon or a smaller dt keeps contacts within it (compute tri/stats counts them "
+                "as penetrations)",
+                lmp_->update->ntimestep, all, who, t.max_overlap, t.max_overlap / (2.0 * epsilon_));
+  if (lmp_->comm->me == 0)
+    lmp_->error->warning(FLERR, msg);
 }
 
 // Particles created inside each other or a wall. A shallow intersection is pushed apart, but

@@ -145,16 +145,17 @@ def run_deck(ctx, deck, variables=None, ranks=1, expect_ok=True, env_extra=None,
     return p.returncode, p.stdout
 
 
-def expect_error(ctx, deck, variables, pattern):
+def expect_error(ctx, deck, variables, pattern, with_output=False):
     """Runs a deck that must stop with a LIGGGHTS error matching `pattern` (searched in the
-    ERROR lines), without a crash; returns the first ERROR line."""
+    ERROR lines), without a crash; returns the first ERROR line (and the screen output, with
+    with_output=True)."""
     code, out = run_deck(ctx, deck, variables, expect_ok=False)
     errors = [l.strip() for l in out.splitlines() if "ERROR" in l]
     check(not any(s in out for s in CRASH_WORDS),
           f"{deck} {variables}: crashed instead of a clean error:\n{out[-2000:]}")
     check(code != 0 and errors and re.search(pattern, " ".join(errors)),
           f"{deck} {variables}: exit {code}, errors {errors or out[-1500:]!r}, wanted /{pattern}/")
-    return errors[0]
+    return (errors[0], out) if with_output else errors[0]
 
 
 # --------------------------------------------------------------------------------------------

@@ -24,18 +24,27 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 import decklib  # noqa: E402
 
+# The modules here that hold no tests. Any other .py must be a test module, test_*.py: a
+# script in the old style (main() and its own CTest line) would otherwise never run.
+HELPERS = ("decklib", "decktests")
+
 
 def modules():
     return sorted(os.path.basename(p)[:-3] for p in glob.glob(os.path.join(HERE, "test_*.py")))
 
 
 def lint():
-    """Test functions that discovery would miss, found in the source rather than by import:
-    `def test_*` in a module that is not a test module, nested inside a function or class, or
-    defined twice in one module (the second silently replaces the first)."""
+    """Tests that discovery would miss, found in the source rather than by import: a .py that
+    is neither a test module nor one of HELPERS; `def test_*` in a module that is not a test
+    module, nested inside a function or class, defined twice in one module (the second silently
+    replaces the first), or not taking exactly one argument."""
     problems = []
     for path in sorted(glob.glob(os.path.join(HERE, "*.py"))):
         module = os.path.basename(path)[:-3]
+        if not module.startswith("test_") and module not in HELPERS:
+            problems.append(f"{module}.py is neither a test module (test_*.py) nor a helper "
+                            f"({', '.join(h + '.py' for h in HELPERS)}): its tests would never "
+                            "run; make them test_* functions of a test_*.py")
         with open(path) as f:
             tree = ast.parse(f.read(), path)
         top = {id(n) for n in tree.body}

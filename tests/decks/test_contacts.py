@@ -1,11 +1,13 @@
 """Contacts of one evaluation against hand-computed forces and torques (pair tri/gran, fix
-tri/wall), and compute tri/stats with fix tri/adapt_dt's rule on two approaching cubes."""
+tri/wall); compute tri/stats with fix tri/adapt_dt's rule on two approaching cubes, and the
+limits of fix tri/adapt_dt (its rate-limited log, dt stuck at dtmin while real surfaces
+intersect)."""
 import os
 import re
 import struct
 
-from decklib import CUBE_SIDE, EPS, Failure, check, last_frame, make_contact_meshes, run_deck
-from decklib import thermo_rows
+from decklib import CUBE_SIDE, EPS, Failure, check, expect_error, last_frame, make_contact_meshes
+from decklib import run_deck, thermo_rows
 
 DENSITY = 2500.0
 # Material of in.contact_pair / in.contact_wall
@@ -170,3 +172,79 @@ def test_stats_and_adapt_dt(ctx):
           f"row); closest distance {min(r['dmin'] for r in touching):.4g} m; contacts "
           f"before/after reduction up to {max(r['stats.contacts_before'] for r in touching):g}/"
           f"{max(r['stats.contacts_after'] for r in touching):g}")
+
+
+ADAPT_SUMMARY = re.compile(r"tri/adapt_dt: steps (\d+)-(\d+): (\d+) more changes not listed "
+                           r"\((\d+) halvings, (\d+) growths, (\d+) approach bounds\)")
+
+
+def write_cube12(path, side=0.004):
+    """A closed, outward cube of side `side` centred at 0: 12 triangles, %.9g coordinates."""
+    h = 0.5 * side
+    v = [(sx * h, sy * h, sz * h) for sz in (-1, 1) for sy in (-1, 1) for sx in (-1, 1)]
+    faces = [(0, 2, 3), (0, 3, 1), (4, 5, 7), (4, 7, 6), (0, 1, 5), (0, 5, 4),
+             (2, 6, 7), (2, 7, 3), (0, 4, 6), (0, 6, 2), (1, 3, 7), (1, 7, 5)]
+    with open(path, "w") as f:
+        f.write("solid cube\n")
+        for t in faces:
+            f.write(" facet normal 0 0 0\n  outer loop\n")
+            for i in t:
+                f.write("   vertex %.9g %.9g %.9g\n" % v[i])
+            f.write("  endloop\n endfacet\n")
+        f.write("endsolid cube\n")
+
+
+def test_adapt_dt_limits(ctx):
+    """fix tri/adapt_dt's limits: (1) its log is rate-limited, at most 10 lines of changes per
+    window of `log N` steps and one summary line for the rest, which together account for every
+    change that `log all` lists; (2) the first intersection of real surfaces in a run is a
+    WARNING, once; sitting at dtmin while they intersect (two soft cubes driven 12 times through
+    their soft layers) stops with an error naming the pair, the depth and the remedy."""
+    write_cube12(os.path.join(ctx.work, "cube.stl"))
+
+    # (1) The same run with every change listed and with a 200-step window.
+    _, out_all = run_deck(ctx, "in.contact_adapt", {"adtlog": "all"})
+    _, out_lim = run_deck(ctx, "in.contact_adapt", {"adtlog": 200})
+    every = ADAPT_LINE.findall(out_all)
+    listed = ADAPT_LINE.findall(out_lim)
+    summaries = ADAPT_SUMMARY.findall(out_lim)
+    quiet = sum(int(s[2]) for s in summaries)
+    check(len(every) > 10, f"only {len(every)} changes with 'log all': nothing to limit")
+    check(summaries, "no summary line with 'log 200'")
+    check(listed, "'log 200' lists no change")
+    check(len(listed) + quiet == len(every), f"'log 200' lists {len(listed)} changes and sums "
+                                             f"up {quiet}, 'log all' lists {len(every)}")
+    for s in summaries:
+        check(int(s[2]) == int(s[3]) + int(s[4]) + int(s[5]),
+              f"summary {s}: the counts do not add up")
+    # Per window of 200 steps (windows start at a change), at most 10 lines.
+    count, start = 0, None
+    for step, *_ in listed:
+        step = int(step)
+        if start is None or step >= start + 200:
+            start, count = step, 0
+        count += 1
+        check(count <= 10, f"more than 10 lines in the window starting at step {start}")
+    print(f"log all: {len(every)} changes; log 200: {len(listed)} lines + {len(summaries)} "
+          f"summaries of {quiet} more")
+
+    # (2) Soft cubes at 2 x 2 m/s: a linear spring would need 2.5 mm of overlap (12 x the
+    # combined layer of 0.2 mm); dt is pinned at dtmin = dtmax, so nothing can be halved.
+    want = (r"Fix tri/adapt_dt: step \d+: dt has been at dtmin \(1e-06 s\) for 10 steps while "
+            r"real surfaces intersect \(1 interaction\(s\), e\.g\. particles 1 and 2; deepest "
+            r"overlap \S+ m = \S+ x the combined soft layer 2 epsilon\): the contact force cannot "
+            r"push them apart at this stiffness; use a stiffer kn, a wider epsilon, or a lower "
+            r"dtmin")
+    line, out = expect_error(ctx, "in.contact_adapt", {"vx": 2.0, "knv": 50, "dtmax": 1e-6,
+                                                       "dtmin": 1e-6, "adtlog": "all"},
+                             want, with_output=True)
+    warnings = re.findall(r"WARNING: tri/particles: step \d+: real surfaces intersect for the "
+                          r"first time in this run \(1 interaction\(s\), e\.g\. particles 1 and "
+                          r"2; deepest overlap", out)
+    check(len(warnings) == 1, f"{len(warnings)} first-intersection warnings, expected 1")
+    print(line)
+
+    # (3) A bad log window.
+    expect_error(ctx, "in.contact_adapt", {"adtlog": 2.5},
+                 re.escape("Fix tri/adapt_dt: 'log' expects a number of steps or 'all', got "
+                           "'2.5'"))
