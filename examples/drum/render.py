@@ -42,9 +42,9 @@ def main():
     all_frames = frames(pvd)
     pick = [all_frames[round(k * (len(all_frames) - 1) / max(nframes - 1, 1))]
             for k in range(nframes)]
-    fig, axes = plt.subplots(1, nframes, figsize=(3.2 * nframes, 3.6))
+    fig, axes = plt.subplots(1, nframes, figsize=(3.2 * nframes, 3.3))
     axes = np.atleast_1d(axes)
-    vmax = 0.1
+    vmax = 0.2  # the rim of a 30 mm drum at one turn a second: 0.19 m/s
     for ax, (t, path) in zip(axes, pick):
         tris, speed = read(path)
         order = np.argsort(tris[:, :, 1].mean(axis=1))[::-1]  # far (large y) first

@@ -1,34 +1,48 @@
 // Reads a closed triangle mesh from a file, for `shape NAME file PATH` (see DESIGN.md).
 //
-// Formats, chosen by the extension (case-insensitive), read by VTK's readers:
-//   .stl  ASCII or binary (vtkSTLReader). Binary is recognised by its size
-//         (84 + 50 x the triangle count in the header), even if the header starts with
-//         "solid"; otherwise a file starting with "solid" is ASCII.
-//   .obj  Wavefront OBJ (vtkOBJReader): vertices and faces; texture and normal data ignored.
-//   .ply  ASCII or binary PLY (vtkPLYReader).
-// Faces with more than three corners (OBJ, PLY) are triangulated (vtkTriangleFilter); points
-// and lines in the file are ignored. Vertices with exactly equal coordinates are merged, so
-// an STL (which repeats each corner in every triangle) becomes an indexed mesh; no tolerance
-// is applied, which is right for files whose shared corners were written from the same
-// numbers. Units: the file's, unchanged (apply `scaled` for another unit).
-// Precision: VTK's three readers keep points as 32-bit floats whatever the file holds, so
-// coordinates carry about 7 significant digits (relative error <= 6e-8).
+// Formats, chosen by the extension (case-insensitive), each read by a parser of its own
+// (stl_reader.cpp, obj_reader.cpp, ply_reader.cpp; no VTK):
+//   .stl  binary or ASCII. Binary is recognised by its size (84 + 50 x the triangle count in
+//         its header), even if the header starts with "solid"; otherwise a file starting with
+//         "solid" is ASCII (keywords in any case; several solids in a row are one mesh). Facet
+//         normals and attribute bytes are not read.
+//   .obj  Wavefront OBJ: "v" and "f" lines. Corners v, v/vt, v//vn or v/vt/vn (one form per
+//         face), 1-based or negative (counting back from the last one defined before the face);
+//         texture and normal indices are checked against the "vt"/"vn" lines before the face
+//         and otherwise ignored. Other records (l, p, g, o, usemtl, s, comments, ...) are
+//         skipped.
+//   .ply  ascii, binary_little_endian or binary_big_endian: the vertex element's x, y, z (any
+//         scalar type) and the face element's vertex_indices (or vertex_index) list; other
+//         elements and properties are skipped by their declared types.
+// Faces with more than three corners (OBJ, PLY) are split into triangles with their
+// orientation: a convex polygon into the fan from its first corner (c0, ck, ck+1), any other
+// simple polygon (concave, or with three corners in a line) by ear clipping (mesh_formats.h);
+// consecutive corners at the same point count once. Vertices with exactly equal coordinates
+// are merged (so an STL, which repeats each corner in every triangle, becomes an indexed
+// mesh), in the order the triangles first use them; vertices no triangle uses are dropped.
+// No tolerance is applied, which is right for files whose shared corners were written from the
+// same numbers. Units: the file's, unchanged (apply `scaled` for another unit).
+// Precision: what the file holds. Text numbers (ASCII STL, OBJ, ASCII PLY) are parsed as
+// doubles, correctly rounded as by strtod and independent of the locale; binary STL holds
+// float32; binary PLY values are converted exactly from their declared type (float, double or
+// an integer type).
 //
 // The result is not validated beyond finite coordinates: closedness, orientation and
 // degeneracy are make_shape's job (shape.h), which names the offending triangle.
 //
-// Errors throw MeshFileError whose message starts with "<path>: ", for: a missing, unreadable
-// or empty file; an unknown extension; a binary STL whose size disagrees with its triangle
-// count; an ASCII STL without its closing "endsolid" or with a byte that is not ASCII text
-// (VTK would take it for binary); a PLY file whose body is shorter than its header announces
-// or whose faces name missing vertices, or without vertex x, y, z or face vertex_indices
-// (checked before VTK reads it: VTK 9.1's PLY reader aborts the process on a truncated file
-// and dereferences a missing element); an OBJ face naming a vertex, texture coordinate or
-// normal not defined before it, or mixing corner forms (checked before VTK reads it, which
-// uses the indices unchecked); anything VTK reports as an error or warning while reading
-// (captured, never printed); a file with no triangles; a coordinate that is not finite as a
-// 32-bit float (1e39, nan, inf).
-// Thread safety: calls are serialised internally (VTK's message window is process-global).
+// Errors throw MeshFileError whose message is "<path>: <what>", for: a missing, unreadable or
+// empty file; an unknown extension; a binary STL whose size disagrees with its triangle count;
+// an ASCII STL without its closing "endsolid", with a byte that is not ASCII text, or with a
+// line out of place (named with its number); an OBJ line that is not what its keyword needs (a
+// vertex without three numbers, a face with fewer than three corners, a corner that is not an
+// index, mixes corner forms or names a vertex, texture coordinate or normal not defined before
+// it); a PLY file whose header is malformed (unknown format or type, no vertex x/y/z or face
+// vertex index list, stray lines), whose body is shorter or longer than its header announces,
+// whose ascii values are not numbers, or whose faces name vertices that do not exist or have
+// fewer than three; a face that is not a simple polygon; a number beyond the range of a double;
+// a file with no triangles; a triangle corner with a coordinate that is not finite (nan, inf).
+// No count a file announces is trusted with an allocation before the bytes behind it are seen.
+// Thread safety: calls are independent (no shared state).
 #pragma once
 
 #include "triangle_mesh.h"

@@ -4,7 +4,6 @@ limits of fix tri/adapt_dt (its rate-limited log, dt stuck at dtmin while real s
 intersect)."""
 import os
 import re
-import struct
 
 from decklib import CUBE_SIDE, EPS, Failure, check, expect_error, last_frame, make_contact_meshes
 from decklib import run_deck, thermo_rows
@@ -14,11 +13,6 @@ DENSITY = 2500.0
 MAT = {"kn": 2000.0, "kt": 1000.0, "gamman": 20.0, "gammat": 10.0, "mu": 0.5}
 
 
-def f32(v):
-    """VTK's STL reader stores coordinates as float: the mesh is the float-rounded one."""
-    return struct.unpack("f", struct.pack("f", v))[0]
-
-
 def cross(a, b):
     return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
 
@@ -26,7 +20,7 @@ def cross(a, b):
 def test_contact_forces(ctx):
     """Forces and torques of one evaluation (run 0) against hand-computed values."""
     make_contact_meshes(ctx.work)
-    h = f32(CUBE_SIDE / 2)              # half side of the mesh as read
+    h = CUBE_SIDE / 2                   # half side of the mesh as read (ASCII STL: doubles)
     mass = DENSITY * (2 * h) ** 3
     kn, kt, gn, gt, mu = (MAT[k] for k in ("kn", "kt", "gamman", "gammat", "mu"))
     dt = 1e-5
