@@ -1,5 +1,6 @@
 #include "fix_tri_particles.h"
 
+#include "incompatible_styles.h"
 #include "particle_options.h"
 #include "shape_builder.h"
 
@@ -7,6 +8,7 @@
 #include "seeded_random.h"
 
 #include "peratom_restart.h"
+#include "restart_shapes.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -137,6 +139,7 @@ void FixTriParticles::apply_mass_and_radius(int i) {
 }
 
 void FixTriParticles::init() {
+  tri_liggghts::refuse_incompatible_styles(lmp, id);
   initialise_unset_atoms();
   for (int i = 0; i < atom->nlocal; ++i)
     apply_mass_and_radius(i);
@@ -321,31 +324,31 @@ bool FixTriParticles::take_restored_force_and_torque(int i, double *f, double *t
   return true;
 }
 
-// The shapes themselves are rebuilt from the deck; the restart file keeps a fingerprint so a
-// deck whose shapes differ from the run that wrote the restart is refused.
-double FixTriParticles::shape_fingerprint() const {
-  double f = num_shapes();
-  for (int s = 0; s < num_shapes(); ++s)
-    f += (s + 1) * (shapes_[s].volume * 1e9 + shapes_[s].soa.num_triangles());
-  return f;
-}
-
+// The shapes themselves are rebuilt from the deck; the restart file keeps what the deck must
+// repeat (restart_shapes.h), and a deck that differs is refused, naming each difference.
 void FixTriParticles::write_restart(FILE *fp) {
   if (comm->me != 0)
     return;
-  const double data[3] = {shape_fingerprint(), density_, epsilon_};
-  const int size = sizeof(data);
+  const std::vector<char> data =
+      tri_liggghts::encode(tri_liggghts::make_record(shapes_, epsilon_, density_));
+  const int size = static_cast<int>(data.size());
   fwrite(&size, sizeof(int), 1, fp);
-  fwrite(data, sizeof(double), 3, fp);
+  fwrite(data.data(), 1, data.size(), fp);
 }
 
 void FixTriParticles::restart(char *buf) {
   monitor_->skip_initial_check();
-  const double *data = reinterpret_cast<const double *>(buf);
-  const double f = shape_fingerprint();
-  if (std::fabs(data[0] - f) > 1e-9 * std::fabs(f))
-    error->all(FLERR, "Fix tri/particles: the shapes in this deck differ from those of the run "
-                      "that wrote the restart file");
+  std::string msg;
+  try {
+    const std::string d = tri_liggghts::differences(
+        tri_liggghts::decode(buf), tri_liggghts::make_record(shapes_, epsilon_, density_));
+    if (!d.empty())
+      msg = "Fix tri/particles: this deck differs from the run that wrote the restart file: " + d;
+  } catch (const std::runtime_error &e) {
+    msg = std::string("Fix tri/particles: ") + e.what();
+  }
+  if (!msg.empty())
+    error->all(FLERR, msg.c_str());
 }
 
 double FixTriParticles::max_rad(int type) {

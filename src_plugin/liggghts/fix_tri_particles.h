@@ -108,7 +108,6 @@ private:
   void initialise_atom(int i);
   int initialise_unset_atoms();
   void apply_mass_and_radius(int i);
-  double shape_fingerprint() const;
 };
 
 } // namespace LAMMPS_NS

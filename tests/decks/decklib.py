@@ -132,25 +132,36 @@ def run_deck(ctx, deck, variables=None, ranks=1, expect_ok=True, env_extra=None,
         cmd += ["-var", k, str(v)]
     if mpirun or (mpirun is None and ranks > 1):
         cmd = ["mpirun", "-np", str(ranks)] + cmd
+    code, out = run(cmd, ctx.work, env_extra, timeout)
+    if expect_ok and code != 0:
+        raise Failure(f"{' '.join(cmd)} exited {code}:\n{out[-3000:]}")
+    return code, out
+
+
+def run(cmd, cwd, env_extra=None, timeout=600):
+    """Runs a command as run_deck does (MPI_ENV, then `env_extra`) without adding to it;
+    returns (exit code, combined screen output)."""
     env = dict(os.environ, **MPI_ENV)
     env.update(env_extra or {})
     try:
-        p = subprocess.run(cmd, cwd=ctx.work, env=env, stdout=subprocess.PIPE,
+        p = subprocess.run(cmd, cwd=cwd, env=env, stdout=subprocess.PIPE,
                            stderr=subprocess.STDOUT, text=True, errors="replace",
                            timeout=timeout)
     except subprocess.TimeoutExpired:
-        raise Failure(f"{deck} {variables or {}}: still running after {timeout} s")
-    if expect_ok and p.returncode != 0:
-        raise Failure(f"{' '.join(cmd)} exited {p.returncode}:\n{p.stdout[-3000:]}")
+        raise Failure(f"{' '.join(cmd)} in {cwd}: still running after {timeout} s")
     return p.returncode, p.stdout
 
 
+ERROR_SOURCE = re.compile(r"\s*\([^()]*:\d+\)\s*$")   # LIGGGHTS's trailing " (file.cpp:123)"
+
+
 def expect_error(ctx, deck, variables, pattern, with_output=False):
-    """Runs a deck that must stop with a LIGGGHTS error matching `pattern` (searched in the
-    ERROR lines), without a crash; returns the first ERROR line (and the screen output, with
-    with_output=True)."""
+    """Runs a deck that must stop with a LIGGGHTS error matching `pattern`, without a crash.
+    The pattern is searched in the ERROR lines, each without its trailing source location
+    (so `$` is the end of the message), joined by spaces. Returns the first of them (and the
+    screen output, with with_output=True)."""
     code, out = run_deck(ctx, deck, variables, expect_ok=False)
-    errors = [l.strip() for l in out.splitlines() if "ERROR" in l]
+    errors = [ERROR_SOURCE.sub("", l.strip()) for l in out.splitlines() if "ERROR" in l]
     check(not any(s in out for s in CRASH_WORDS),
           f"{deck} {variables}: crashed instead of a clean error:\n{out[-2000:]}")
     check(code != 0 and errors and re.search(pattern, " ".join(errors)),

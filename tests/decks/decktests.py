@@ -9,6 +9,7 @@ registered by being written. Standard library only.
   decktests.py --check NAME...      fails unless NAME... (the names CMake registered) are
                                     exactly the tests discovered now
   decktests.py NAME --exe LIGGGHTS_TRI --work DIR [--vtkdump PATH] [--stats-columns PATH]
+                    [--liggghts PATH]
 """
 import argparse
 import ast
@@ -95,6 +96,7 @@ def main():
     ap.add_argument("--work")
     ap.add_argument("--vtkdump")
     ap.add_argument("--stats-columns", help="tri-stats-columns: the columns of compute tri/stats")
+    ap.add_argument("--liggghts", help="LIGGGHTS's own executable")
     ctx = ap.parse_args()
     problems = lint()
     if problems:
