@@ -119,23 +119,39 @@ def subdir(ctx, name):
 def run_deck(ctx, deck, variables=None, ranks=1, expect_ok=True, env_extra=None, timeout=600,
              mpirun=None):
     """Runs one deck (a path relative to this folder, or absolute) in ctx.work; returns (exit
-    code, combined screen output, with the commands echoed as run). Variables: dir (this folder
-    unless given), stat_NAME for every compute tri/stats column when the columns are known,
-    then `variables`. `env_extra` adds to (and overrides) the environment, e.g.
-    OMP_NUM_THREADS. Through mpirun when ranks > 1, or always with mpirun=True."""
+    code, combined screen output). The output is a DeckOutput: the screen text as LIGGGHTS
+    prints it, and in .log the log file, which also holds every command as run (-echo log), for
+    thermo_rows. Variables: dir (this folder unless given), stat_NAME for every compute
+    tri/stats column when the columns are known, then `variables`. `env_extra` adds to (and
+    overrides) the environment, e.g. OMP_NUM_THREADS. Through mpirun when ranks > 1, or always
+    with mpirun=True."""
     values = {"dir": HERE}
     if _stats_tool:
         values.update(stat_variables())
     values.update(variables or {})
-    cmd = [ctx.exe, "-in", os.path.join(HERE, deck), "-log", "none", "-echo", "screen"]
+    log = os.path.join(ctx.work, "log.deck")
+    if os.path.exists(log):
+        os.remove(log)
+    cmd = [ctx.exe, "-in", os.path.join(HERE, deck), "-log", log, "-echo", "log"]
     for k, v in values.items():
         cmd += ["-var", k, str(v)]
     if mpirun or (mpirun is None and ranks > 1):
         cmd = ["mpirun", "-np", str(ranks)] + cmd
     code, out = run(cmd, ctx.work, env_extra, timeout)
+    out = DeckOutput(out)
+    if os.path.exists(log):
+        with open(log, errors="replace") as f:
+            out.log = f.read()
     if expect_ok and code != 0:
         raise Failure(f"{' '.join(cmd)} exited {code}:\n{out[-3000:]}")
     return code, out
+
+
+class DeckOutput(str):
+    """A deck's screen output; .log: its log file with the commands echoed (None if there is
+    none), where thermo_rows finds the thermo_style in force. Echoing to the screen instead
+    would put the decks' lines, comments included, into every search of the screen text."""
+    log = None
 
 
 def run(cmd, cwd, env_extra=None, timeout=600):
@@ -178,18 +194,20 @@ HEADER_WIDTH = 8      # LIGGGHTS 3.8 cuts a thermo header word to 8 characters
 
 
 def thermo_rows(out, stats=("stats",)):
-    """Every thermo row of a screen output (run_deck echoes the commands): a list of dicts, one
-    per row, keyed by column. The keys come from the thermo_style command in force (echoed
-    after variable substitution), since LIGGGHTS cuts header words to 8 characters: c_ID[k] of
-    a compute tri/stats whose ID is in `stats` is ID.NAME by its column name (e.g.
-    stats.contacts_after, never stats[6]); another c_X, f_X or v_X is X (adt[1], dmin); a
-    built-in keyword is its header word (Step, Atoms, Dt, KinEng). A missing key fails the
-    test, naming the columns there are."""
+    """Every thermo row of a run_deck output: a list of dicts, one per row, keyed by column.
+    Read from its log (out.log), where the thermo_style in force is echoed after variable
+    substitution: the keys come from it, since LIGGGHTS cuts header words to 8 characters (a
+    plain screen text gives the header words as they are). c_ID[k] of a compute tri/stats
+    whose ID is in `stats` is ID.NAME by its column name (e.g. stats.contacts_after, never
+    stats[6]); another c_X, f_X or v_X is X (adt[1], dmin); a built-in keyword is its header
+    word (Step, Atoms, Dt, KinEng). A missing key fails the test, naming the columns there
+    are."""
     rows, header, keywords = [], None, None
-    for line in out.splitlines():
+    text = getattr(out, "log", None) or out
+    for line in text.splitlines():
         m = THERMO_STYLE.match(line)
         if m:
-            keywords = m.group(1).split()
+            keywords = m.group(1).split("#")[0].split()   # the echo keeps comments
             continue
         words = line.split()
         if words and words[0] == "Step":
