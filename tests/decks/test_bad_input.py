@@ -1,5 +1,6 @@
 """Bad input: each case is a deck that must stop with a LIGGGHTS error naming the problem (the
-file or the keyword), never a crash and never a run. Every case goes through
+file or the keyword), never a crash and never a run: fix tri/particles and its meshes, the
+contact styles, the orientation and insertion keywords. Every case goes through
 decklib.expect_error; a test reports all failing cases at once."""
 import os
 
@@ -97,3 +98,77 @@ def test_bad_contact_input(ctx):
     # The deck with no line swapped runs: each error below comes from its one changed line.
     run_deck(ctx, "in.contact_bad")
     expect_errors(ctx, {k: ("in.contact_bad", v, p) for k, (v, p) in BAD_CONTACT.items()})
+
+
+# Orientation and insertion (fix tri/particles `orient file`, `template ID SHAPE`,
+# particletemplate/sphere, particledistribution/discrete): decks written here -> the error
+# they must give (the README's "Bad input and extreme states" rows).
+INSERTION_HEAD = """\
+units           si
+atom_style      sphere
+atom_modify     map array sort 0 0.0
+boundary        f f f
+newton          off
+communicate     single vel yes
+region          box block -0.03 0.03 -0.03 0.03 -0.03 0.03 units box
+create_box      2 box
+neighbor        0.001 bin
+neigh_modify    delay 0
+timestep        1e-5
+"""
+INSERTION_SHAPES = "shape a random ntri 20 size 0.004 seed 1 shape b random ntri 20 size 0.003 seed 2"
+INSERTION_PTS1 = ("fix pts1 all particletemplate/sphere 15485863 atom_type {t} density constant 2500 "
+        "radius constant 0.002\n")
+INSERTION_PDD = "fix pdd all particledistribution/discrete 32452843 1 pts1 1.0\n"
+
+
+def particles(extra):
+    return f"fix shapes all tri/particles {INSERTION_SHAPES} {extra} {TAIL}\n"
+
+
+BAD_INSERTION = {
+    "orient_unknown": (particles("orient sideways"),
+                       r"'orient' expects 'random SEED', 'none' or 'file', got 'sideways'"),
+    "template_unknown_shape": (particles("template pts1 nosuch"),
+                               r"'template pts1 nosuch': no shape is named 'nosuch'"),
+    "template_twice": (particles("template pts1 a template pts1 b"),
+                       r"'template pts1' is given twice"),
+    "template_missing_value": (particles("") .replace(TAIL, TAIL + " template pts1"),
+                               r"missing shape name after 'template pts1'"),
+    "template_no_such_fix": (particles("template ghost a") + "run 1\n",
+                             r"'template ghost': no fix has ID 'ghost' \(expected a fix "
+                             r"particletemplate/sphere\)"),
+    "template_not_a_template": ("fix grav all gravity 9.81 vector 0 0 -1\n"
+                                + particles("template grav a") + "run 1\n",
+                                r"'template grav': fix grav is a gravity; only "
+                                r"particletemplate/sphere templates can be given a shape"),
+    "template_without_shape": (particles("assign random 5") + INSERTION_PTS1.format(t=1),
+                               r"fix particletemplate/sphere pts1 has no shape: with 'assign "
+                               r"random' and 2 shapes, give it one with 'template pts1 SHAPE'"),
+    "template_type_without_shape": (INSERTION_PTS1.format(t=3) + particles("assign type"),
+                                    r"fix particletemplate/sphere pts1 inserts atom type 3, but "
+                                    r"'assign type' has 2 shape\(s\)"),
+    "distribution_before_particles": (INSERTION_PTS1.format(t=1) + INSERTION_PDD + particles("template pts1 a"),
+                                      r"fix particledistribution/discrete pdd is defined before "
+                                      r"fix tri/particles: it has already turned its mass "
+                                      r"fractions into particle numbers"),
+    "multisphere_template": (particles("assign type")
+                             + "fix pms all particletemplate/multiplespheres 15485863 atom_type 1 "
+                               "density constant 2500 nspheres 2 ntry 10000 spheres 0 0 0 0.001 "
+                               "0.001 0 0 0.001\n"
+                             + "fix pdd all particledistribution/discrete 32452843 1 pms 1.0\n"
+                             + "run 1\n",
+                             r"fix particledistribution/discrete pdd uses fix pms "
+                             r"\(particletemplate/multiplespheres\): triangulated particles are "
+                             r"inserted from particletemplate/sphere templates only"),
+}
+
+
+def test_bad_insertion_input(ctx):
+    cases = {}
+    for name, (body, pattern) in BAD_INSERTION.items():
+        path = os.path.join(ctx.work, f"in.{name}")
+        with open(path, "w") as f:
+            f.write(INSERTION_HEAD + body)
+        cases[name] = (path, {}, pattern)
+    expect_errors(ctx, cases)
