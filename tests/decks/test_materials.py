@@ -1,32 +1,16 @@
-#!/usr/bin/env python3
 """LIGGGHTS materials on mesh particles (pair_style tri/gran / fix tri/wall `model hooke|hertz`),
 `epsilon auto` and the time-step check of fix tri/particles, through real decks (in.materials,
 in.timestep_check). Every expected number is computed here from the formulas of
-src_plugin/kernel/material_mapping.h, independently of the C++. Standard library only.
-
-usage: materials_test.py TEST --exe LIGGGHTS_TRI --work DIR
-  TEST: forces | restitution | epsilon_auto | timestep | bad_input
-"""
-import argparse
+src_plugin/kernel/material_mapping.h, independently of the C++. Tests materials_forces,
+materials_restitution, materials_epsilon_auto, materials_timestep, materials_bad_input."""
 import math
 import os
 import re
-import shutil
 import subprocess
 import sys
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-MESHGEN = os.path.join(HERE, "..", "..", "validation", "meshes", "meshgen.py")
-ENV = {"OMPI_ALLOW_RUN_AS_ROOT": "1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM": "1", "OMP_NUM_THREADS": "1"}
-
-
-class Failure(Exception):
-    pass
-
-
-def check(cond, message):
-    if not cond:
-        raise Failure(message)
+import decklib
+from decklib import MESHGEN, Failure, check, expect_error, run_deck, thermo_rows
 
 
 # The cube of the decks as read (ASCII STL: doubles, all digits): side 2h, density 2500
@@ -102,62 +86,20 @@ def mapped(model, y, nu, e, v_c, wall, limit_force=True):
     return kn, kt, 2 * zeta * math.sqrt(kn * meff) / meff, meff, zeta
 
 
-def run_deck(ctx, deck, variables, expect_ok=True):
-    cmd = [ctx.exe, "-in", os.path.join(HERE, deck), "-var", "dir", HERE, "-log", "none"]
-    for k, v in variables.items():
-        cmd += ["-var", k, str(v)]
-    p = subprocess.run(cmd, cwd=ctx.work, env=dict(os.environ, **ENV), stdout=subprocess.PIPE,
-                       stderr=subprocess.STDOUT, text=True, errors="replace", timeout=600)
-    if expect_ok and p.returncode != 0:
-        raise Failure(f"{' '.join(cmd)} exited {p.returncode}:\n{p.stdout[-3000:]}")
-    return p.returncode, p.stdout
-
-
-def expect_error(ctx, deck, variables, pattern):
-    code, out = run_deck(ctx, deck, variables, expect_ok=False)
-    errors = [l.strip() for l in out.splitlines() if "ERROR" in l]
-    check(not any(s in out for s in ("Segmentation", "signal", "core dumped")),
-          f"{deck} {variables}: crashed:\n{out[-2000:]}")
-    check(code != 0 and errors and re.search(pattern, " ".join(errors)),
-          f"{deck} {variables}: exit {code}, errors {errors or out[-1500:]!r}, wanted /{pattern}/")
-    return errors[0]
+def make_meshes(work):
+    subprocess.run([sys.executable, MESHGEN, "cube", "2", repr(0.004), "cube.stl"], cwd=work,
+                   check=True)
+    subprocess.run([sys.executable, MESHGEN, "plane", "0.01", "plane.stl"], cwd=work, check=True)
 
 
 def last_frame(path):
-    with open(path) as f:
-        lines = f.read().splitlines()
-    starts = [i for i, l in enumerate(lines) if l.startswith("ITEM: TIMESTEP")]
-    s = starts[-1]
-    n = int(lines[s + 3])
-    return {int(l.split()[0]): [float(x) for x in l.split()[1:]] for l in lines[s + 9: s + 9 + n]}
-
-
-def thermo_rows(out):
-    rows, header = [], None
-    for line in out.splitlines():
-        words = line.split()
-        if words and words[0] == "Step":
-            header = words
-            continue
-        if header and len(words) == len(header):
-            try:
-                rows.append(dict(zip(header, (float(w) for w in words))))
-                continue
-            except ValueError:
-                pass
-        if words and words[0] == "Loop":
-            header = None
-    return rows
-
-
-def make_meshes(work):
-    subprocess.run([sys.executable, MESHGEN, "cube", "2", repr(0.004), "cube.stl"], cwd=work, check=True)
-    subprocess.run([sys.executable, MESHGEN, "plane", "0.01", "plane.stl"], cwd=work, check=True)
+    """The last snapshot of a dump as {id: [floats]}."""
+    return {t: [float(x) for x in r] for t, r in decklib.last_frame(path)[1].items()}
 
 
 # --------------------------------------------------------------------------------------------
 
-def test_forces(ctx):
+def test_materials_forces(ctx):
     """One force evaluation (run 0, brute-force kernel, explicit epsilon 1e-4, gap 1e-4: overlap
     1e-4 m) for hooke and hertz, pair and wall, against F = kn overlap - gamman meff v_n with
     kn, gamman from the mapping computed here (hertz: within 1e-6, LIGGGHTS's damped hertz
@@ -218,7 +160,7 @@ def collide(ctx, variables, nsteps):
     return rows[k0 - 1], rows[k1 + 1], (k1 - k0 + 1) * float(variables["dt"]), out
 
 
-def test_restitution(ctx):
+def test_materials_restitution(ctx):
     """Head-on collisions with epsilon auto: the measured restitution is coefficientRestitution
     (limitForce on, our default) and the duration is the linear spring-dashpot's, pair and wall,
     hooke and hertz."""
@@ -254,7 +196,7 @@ def auto_line(out):
     return float(m.group(1))
 
 
-def test_epsilon_auto(ctx):
+def test_materials_epsilon_auto(ctx):
     """epsilon auto (and no epsilon at all) = the peak overlap v_c sqrt(meff / kn) of the
     published pairs of types; the radius is the bounding radius plus it, set before the first
     neighbour list; an explicit epsilon prints no such line."""
@@ -277,6 +219,7 @@ def test_epsilon_auto(ctx):
         printed = auto_line(out)
         check(abs(printed - expected) <= 1e-5 * expected, f"{name}: printed {printed}, expected {expected}")
         rows = last_frame(os.path.join(ctx.work, "materials.dump"))
+        check(rows, f"{name}: no atoms in the dump")
         for tag, r in rows.items():
             eps = r[9] - BOUNDING
             check(abs(eps - expected) <= 1e-9 * expected, f"{name}: atom {tag} radius {r[9]!r} = "
@@ -287,6 +230,7 @@ def test_epsilon_auto(ctx):
     _, out = run_deck(ctx, "in.materials", {})
     check("epsilon auto" not in out, "an explicit epsilon printed an 'epsilon auto' line")
     rows = last_frame(os.path.join(ctx.work, "materials.dump"))
+    check(rows, "explicit epsilon: no atoms in the dump")
     check(all(abs(r[9] - BOUNDING - 1e-4) <= 1e-15 for r in rows.values()), "explicit epsilon 1e-4 not applied")
     # The collision with epsilon auto is found by the neighbour list (cutoffs sized after it).
     before, after, _, _ = collide(ctx, {"eps": "epsilon auto", "xa": -(H + 2e-4), "xb": H + 2e-4,
@@ -300,7 +244,7 @@ def info_line(out):
     return m.group(1)
 
 
-def test_timestep(ctx):
+def test_materials_timestep(ctx):
     """The time-step check: the four 1 g particles on kn 5e4 N/m with dt 2e-4 s stop; dt at 12.7 %
     of the contact time warns and runs; 3.2 % only reports; off skips it; every N repeats it;
     fix tri/adapt_dt's dtmin decides the error and its dtmax the warning; the approach and
@@ -345,7 +289,7 @@ def test_timestep(ctx):
           f"10 m/s: warnings {warnings}")
     for w in warnings:
         print(f"10 m/s: {w.strip()}")
-    # The 100 m/s deck of decktest.py (check off there): 0.16 g cubes on kn 2e8 N/m, dt 1e-5 s.
+    # The 100 m/s deck of test_extreme.py (check off there): 0.16 g cubes on kn 2e8 N/m, dt 1e-5 s.
     line = expect_error(ctx, "in.extreme_fast", {"tscheck": "check_timestep setup"},
                         r"time step 1e-05 s cannot resolve a contact: it is 503% of the shortest "
                         r"contact time 1\.98692e-06 s")
@@ -387,7 +331,7 @@ BAD = [
 ]
 
 
-def test_bad_input(ctx):
+def test_materials_bad_input(ctx):
     make_meshes(ctx.work)
     run_deck(ctx, "in.materials", {})  # the deck with nothing swapped runs
     failures = []
@@ -397,28 +341,3 @@ def test_bad_input(ctx):
         except Failure as e:
             failures.append(f"{name}: {e}")
     check(not failures, "\n".join(failures))
-
-
-TESTS = {name[5:]: fn for name, fn in globals().items() if name.startswith("test_")}
-
-
-def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("test", choices=sorted(TESTS))
-    ap.add_argument("--exe", required=True)
-    ap.add_argument("--work", required=True)
-    ctx = ap.parse_args()
-    ctx.exe = os.path.abspath(ctx.exe)
-    shutil.rmtree(ctx.work, ignore_errors=True)
-    os.makedirs(ctx.work)
-    try:
-        TESTS[ctx.test](ctx)
-    except Failure as e:
-        print(f"FAIL {ctx.test}: {e}")
-        return 1
-    print(f"PASS {ctx.test}")
-    return 0
-
-
-if __name__ == "__main__":
-    sys.exit(main())

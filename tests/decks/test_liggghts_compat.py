@@ -1,4 +1,3 @@
-#!/usr/bin/env python3
 """LIGGGHTS compatibility: tutorial decks of Debian's liggghts-doc give the same screen output
 (every thermo row, and every other line but timings) and byte-identical dump files under
 `liggghts` and `liggghts-tri`; meshGran and noCohesion also on 2 MPI ranks. The driver only
@@ -8,23 +7,24 @@ The decks are copied to the work directory (the installed files are never edited
 shortened by rewriting their run lengths (and packing's growth and relaxation steps), so each
 run takes a few seconds on 2 cores. Every rewrite must match a line of the deck as installed:
 if a new liggghts-doc changes a deck, the test says which line it did not find.
-Standard library only.
 
-usage: liggghts_compat_test.py --exe LIGGGHTS_TRI --work DIR [--liggghts PATH] [--docdir DIR]
+Run alone, with a choice of decks:
+
+  python3 test_liggghts_compat.py --exe LIGGGHTS_TRI --work DIR [--liggghts PATH]
+      [--docdir DIR] [--only NAME...]
 """
 import argparse
 import filecmp
 import os
 import re
 import shutil
-import subprocess
 import sys
 import time
 
-DOCDIR = "/usr/share/doc/liggghts/examples/LIGGGHTS/Tutorials_public"
-ENV = {"OMPI_ALLOW_RUN_AS_ROOT": "1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM": "1",
-       "OMP_NUM_THREADS": "1"}
+import decklib
+from decklib import Failure, check
 
+DOCDIR = "/usr/share/doc/liggghts/examples/LIGGGHTS/Tutorials_public"
 # name: (tutorial directory, input file, {installed line (words joined by one space): new
 # line}, MPI rank counts). Lengths: enough steps that particles are inserted, fall, collide
 # with each other and the walls (the thermo rows show kinetic and rotational energy change).
@@ -62,10 +62,6 @@ TIMING = re.compile(r"^(Loop time of|(Pair|Neigh|Comm|Outpt|Other|Modify)\s+time
                     r".*finish time|Total wall time|Setting up run|Memory usage)")
 
 
-class Failure(Exception):
-    pass
-
-
 def shorten(src, dst, rewrites):
     """Copies the deck `src` to `dst` with the lines of `rewrites` replaced (matched word by
     word, comments and spacing kept out of the comparison)."""
@@ -97,15 +93,14 @@ def run(exe, tutorial, deck, rewrites, ranks, work):
     if ranks > 1:
         cmd = ["mpirun", "-np", str(ranks), "--oversubscribe"] + cmd
     start = time.time()
-    p = subprocess.run(cmd, cwd=work, env=dict(os.environ, **ENV), stdout=subprocess.PIPE,
-                       stderr=subprocess.STDOUT, text=True, errors="replace", timeout=600)
-    if p.returncode != 0 or "ERROR" in p.stdout:
-        raise Failure(f"{' '.join(cmd)} in {work} exited {p.returncode}:\n{p.stdout[-3000:]}")
+    code, out = decklib.run(cmd, work, timeout=600)
+    if code != 0 or "ERROR" in out:
+        raise Failure(f"{' '.join(cmd)} in {work} exited {code}:\n{out[-3000:]}")
     print(f"  {' '.join(cmd)}: {time.time() - start:.1f} s", flush=True)
-    return p.stdout, work
+    return out, work
 
 
-def thermo_rows(out):
+def thermo_lines(out):
     """The thermo rows of a screen output (the lines under each 'Step ...' header)."""
     rows, header = [], None
     for line in out.splitlines():
@@ -130,7 +125,7 @@ def output_files(root):
 def compare(name, ref, got):
     """(screen, dir) of liggghts against liggghts-tri: thermo rows, other lines, files."""
     (out_a, dir_a), (out_b, dir_b) = ref, got
-    rows_a, rows_b = thermo_rows(out_a), thermo_rows(out_b)
+    rows_a, rows_b = thermo_lines(out_a), thermo_lines(out_b)
     if not rows_a:
         raise Failure(f"{name}: no thermo rows in liggghts's output:\n{out_a[-2000:]}")
     if rows_a != rows_b:
@@ -162,37 +157,49 @@ def compare(name, ref, got):
             f"{last[0]}: {' '.join(last[1:])}), {len(dumps)} dump files byte-identical")
 
 
+def compat(ctx, liggghts, docdir=DOCDIR, only=None):
+    check(os.path.isdir(docdir), f"{docdir} not found: install the tutorial decks with "
+                                 "'apt-get install --no-install-recommends liggghts-doc' "
+                                 "(examples/build.sh does)")
+    check(liggghts, "no liggghts executable (--liggghts)")
+    failures, compared = [], 0
+    for name, (sub, deck, rewrites, rank_counts) in DECKS.items():
+        if only and name not in only:
+            continue
+        for ranks in rank_counts:
+            label = f"{name} ({ranks} rank{'s' if ranks > 1 else ''})"
+            try:
+                tutorial = os.path.join(docdir, sub)
+                base = os.path.join(ctx.work, f"{name}_np{ranks}")
+                ref = run(liggghts, tutorial, deck, rewrites, ranks, base + "_liggghts")
+                got = run(ctx.exe, tutorial, deck, rewrites, ranks, base + "_liggghts-tri")
+                print(f"{label}: {compare(label, ref, got)}", flush=True)
+                compared += 1
+            except Failure as e:
+                failures.append(str(e))
+                print(f"{label}: FAIL", flush=True)
+    check(not failures, "\n".join(failures))
+    check(compared > 0, f"no deck compared (only {only})")
+
+
+def test_liggghts_compat(ctx):
+    compat(ctx, ctx.liggghts or shutil.which("liggghts") or "/usr/bin/liggghts")
+
+
 def main():
-    ap = argparse.ArgumentParser()
+    ap = argparse.ArgumentParser(description="test_liggghts_compat, a choice of decks")
     ap.add_argument("--exe", required=True, help="liggghts-tri")
     ap.add_argument("--work", required=True)
     ap.add_argument("--liggghts", default=shutil.which("liggghts") or "/usr/bin/liggghts")
     ap.add_argument("--docdir", default=DOCDIR)
     ap.add_argument("--only", nargs="*", help="deck names to run (default: all)")
     a = ap.parse_args()
-    if not os.path.isdir(a.docdir):
-        print(f"FAIL liggghts_compat: {a.docdir} not found: install the tutorial decks with "
-              f"'apt-get install --no-install-recommends liggghts-doc' (examples/build.sh "
-              f"does)")
-        return 1
     shutil.rmtree(a.work, ignore_errors=True)
-    failures = []
-    for name, (sub, deck, rewrites, rank_counts) in DECKS.items():
-        if a.only and name not in a.only:
-            continue
-        for ranks in rank_counts:
-            label = f"{name} ({ranks} rank{'s' if ranks > 1 else ''})"
-            try:
-                tutorial = os.path.join(a.docdir, sub)
-                base = os.path.join(a.work, f"{name}_np{ranks}")
-                ref = run(a.liggghts, tutorial, deck, rewrites, ranks, base + "_liggghts")
-                got = run(a.exe, tutorial, deck, rewrites, ranks, base + "_liggghts-tri")
-                print(f"{label}: {compare(label, ref, got)}", flush=True)
-            except (Failure, subprocess.TimeoutExpired) as e:
-                failures.append(str(e))
-                print(f"{label}: FAIL", flush=True)
-    if failures:
-        print("FAIL liggghts_compat:\n  " + "\n  ".join(failures))
+    os.makedirs(a.work)
+    try:
+        compat(a, a.liggghts, a.docdir, a.only)
+    except Failure as e:
+        print(f"FAIL liggghts_compat: {e}")
         return 1
     print("PASS liggghts_compat")
     return 0

@@ -1,21 +1,12 @@
-#!/usr/bin/env python3
 """read_restart with a deck whose fix tri/particles differs from the run that wrote the file
 (src_plugin/liggghts/restart_shapes.h): epsilon, density, the number of shapes, a shape's
 triangles or geometry, the order of the shapes, and a restart file without the shape record
 (as written before it existed) must each stop with an ERROR saying exactly what differs; the
-same deck must continue. Standard library only.
-
-usage: restart_mismatch_test.py --exe LIGGGHTS_TRI --work DIR
-"""
-import argparse
+same deck must continue."""
 import os
 import re
-import shutil
-import subprocess
-import sys
 
-ENV = {"OMPI_ALLOW_RUN_AS_ROOT": "1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM": "1",
-       "OMP_NUM_THREADS": "1"}
+from decklib import Failure, check, expect_error, run_deck
 
 ROCK20 = "shape rock20 random ntri 20 size 0.004 seed 7"
 ROCK40 = "shape rock40 random ntri 40 size 0.004 seed 8"
@@ -128,71 +119,41 @@ def write_box(path, sides):
         f.write("endsolid box\n")
 
 
-def run(exe, work, name, text):
+def write_deck(work, name, text):
     deck = os.path.join(work, f"in.{name}")
     with open(deck, "w") as f:
         f.write(text)
-    p = subprocess.run([exe, "-in", deck, "-log", "none"], cwd=work,
-                       env=dict(os.environ, **ENV), stdout=subprocess.PIPE,
-                       stderr=subprocess.STDOUT, text=True, errors="replace", timeout=300)
-    return p.returncode, p.stdout
+    return deck
 
 
-def error_text(out):
-    """The first ERROR line without LIGGGHTS's trailing ' (source:line)'."""
-    for line in out.splitlines():
-        if line.startswith("ERROR"):
-            return re.sub(r"\s*\([^()]*:\d+\)\s*$", "", line.strip())
-    return None
-
-
-def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--exe", required=True)
-    ap.add_argument("--work", required=True)
-    a = ap.parse_args()
-    shutil.rmtree(a.work, ignore_errors=True)
-    os.makedirs(a.work)
-    write_box(os.path.join(a.work, "cube.stl"), CUBE)
-    write_box(os.path.join(a.work, "slab.stl"), SLAB)
-    code, out = run(a.exe, a.work, "write", WRITE.format(particles=ORIGINAL))
-    if code != 0:
-        print(f"FAIL restart_mismatch: writing the restart file: exit {code}\n{out[-2000:]}")
-        return 1
+def test_restart_mismatch(ctx):
+    work = ctx.work
+    write_box(os.path.join(work, "cube.stl"), CUBE)
+    write_box(os.path.join(work, "slab.stl"), SLAB)
+    run_deck(ctx, write_deck(work, "write", WRITE.format(particles=ORIGINAL)), timeout=300)
     # The same file with its record's magic overwritten: what this version sees in a restart
     # file of the earlier format (three doubles, no magic).
-    with open(os.path.join(a.work, "mismatch.restart"), "rb") as f:
+    with open(os.path.join(work, "mismatch.restart"), "rb") as f:
         data = f.read()
-    if data.count(b"tri/rst2") != 1:
-        print("FAIL restart_mismatch: the restart file does not hold one shape record")
-        return 1
-    with open(os.path.join(a.work, "old.restart"), "wb") as f:
+    check(data.count(b"tri/rst2") == 1, "the restart file does not hold one shape record")
+    with open(os.path.join(work, "old.restart"), "wb") as f:
         f.write(data.replace(b"tri/rst2", b"\0" * 8))
 
+    _, out = run_deck(ctx, write_deck(work, "same", READ.format(restart="mismatch.restart",
+                                                                 particles=ORIGINAL)),
+                      timeout=300)
+    check("ERROR" not in out, f"same deck: {out[-1500:]}")
+    print("same deck: continues")
+    check(CASES, "no cases")
     failures = []
-    code, out = run(a.exe, a.work, "same", READ.format(restart="mismatch.restart",
-                                                       particles=ORIGINAL))
-    if code != 0 or "ERROR" in out:
-        failures.append(f"same deck: exit {code}: {out[-1500:]}")
-    else:
-        print("same deck: continues")
     for name, (particles, pattern) in CASES.items():
         restart = "old.restart" if name == "old_file" else "mismatch.restart"
-        code, out = run(a.exe, a.work, name, READ.format(restart=restart, particles=particles))
-        err = error_text(out)
-        if code == 0 or err is None or not re.search(pattern, err):
-            failures.append(f"{name}: exit {code}, error {err or out[-1500:]!r}, wanted "
-                            f"/{pattern}/")
-        elif any(s in out for s in ("Segmentation", "signal", "core dumped")):
-            failures.append(f"{name}: crashed instead of a clean error")
-        else:
-            print(f"{name}: {err}")
-    if failures:
-        print("FAIL restart_mismatch:\n  " + "\n  ".join(failures))
-        return 1
-    print(f"PASS restart_mismatch: {len(CASES)} differences named, the same deck continues")
-    return 0
-
-
-if __name__ == "__main__":
-    sys.exit(main())
+        deck = write_deck(work, name, READ.format(restart=restart, particles=particles))
+        try:
+            line = expect_error(ctx, deck, {}, pattern)
+            check(re.search(pattern, line), f"the first error {line!r} is not /{pattern}/")
+            print(f"{name}: {line}")
+        except Failure as e:
+            failures.append(f"{name}: {e}")
+    check(not failures, "\n".join(failures))
+    print(f"{len(CASES)} differences named, the same deck continues")

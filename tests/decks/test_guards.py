@@ -1,23 +1,13 @@
-#!/usr/bin/env python3
 """LIGGGHTS sphere styles next to fix tri/particles (src_plugin/liggghts/incompatible_styles.h):
 each case is a small deck of two rocks above a wall in which one line of a LIGGGHTS sphere deck
 is kept; it must stop before its first step with an ERROR that names the style, its ID and the
 tri/ replacement. A last deck keeps the lines of a sphere deck that must stay allowed (gravity,
 materials, mesh/surface with move/mesh, freeze, insertion, thermo computes, dumps) and must
-run.
-Standard library only.
-
-usage: guards_test.py --exe LIGGGHTS_TRI --work DIR
-"""
-import argparse
+run."""
 import os
 import re
-import shutil
-import subprocess
-import sys
 
-ENV = {"OMPI_ALLOW_RUN_AS_ROOT": "1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM": "1",
-       "OMP_NUM_THREADS": "1"}
+from decklib import Failure, check, expect_error, run_deck, thermo_rows
 
 HEAD = """\
 units           si
@@ -73,7 +63,8 @@ CASES = {
     "pair_gran": ("pair_style gran model hooke/stiffness tangential history\npair_coeff * *\n"
                   + WALL + NVE,
                   r"pair_style gran cannot work.*spheres of the bounding radius.*use pair_style "
-                  r"tri/gran \(material: fix property/global kn"),
+                  r"tri/gran model hooke\|hertz\|hooke/stiffness \(the same fix property/global "
+                  r"materials as pair gran\)"),
     "pair_hybrid": ("pair_style hybrid/overlay tri/gran soft 0.001\npair_coeff * * tri/gran\n"
                     "pair_coeff * * soft 1.0\n" + WALL + NVE,
                     r"pair_style hybrid/overlay \(sub-styles tri/gran, soft\).*use pair_style "
@@ -93,7 +84,8 @@ CASES = {
     "compute_contact_atom": (PAIR + WALL + NVE + "compute c all contact/atom\n",
                              r"compute contact/atom \(ID c\).*use compute tri/stats"),
     "check_timestep_gran": (PAIR + WALL + NVE + "fix ts all check/timestep/gran 10 0.1 0.1\n",
-                            r"fix check/timestep/gran \(ID ts\).*use fix tri/adapt_dt"),
+                            r"fix check/timestep/gran \(ID ts\).*use the time-step check of fix tri/particles "
+                            r"\(check_timestep setup\|N, on at every run by default\) and fix tri/adapt_dt"),
 }
 
 # The lines of a sphere deck that carry over: all of HEAD (gravity, property/global,
@@ -108,7 +100,7 @@ ALLOWED = (PAIR + "fix mover all move/mesh mesh cad linear 0.0 0.0 0.01\n" + WAL
            + "group second id 2\nfix hold second freeze\n"
            + "compute erot all tri/erotate\ncompute stats all tri/stats\n"
            + "compute rad all property/atom radius\n"
-           + "thermo_style custom step atoms ke c_erot c_stats[1]\n"
+           + "thermo_style custom step atoms ke c_erot c_stats[${stat_pairs_checked}]\n"
            + "dump d all custom 10 allowed.dump id x y z vx vy vz omegax omegay omegaz c_rad\n")
 
 
@@ -124,54 +116,33 @@ def write_plane(path, half=0.015):
         f.write("endsolid plane\n")
 
 
-def run(exe, work, name, body):
+def write_deck(work, name, body):
     deck = os.path.join(work, f"in.{name}")
     with open(deck, "w") as f:
         f.write(HEAD + body + TAIL)
-    p = subprocess.run([exe, "-in", deck, "-log", "none"], cwd=work,
-                       env=dict(os.environ, **ENV), stdout=subprocess.PIPE,
-                       stderr=subprocess.STDOUT, text=True, errors="replace", timeout=300)
-    return p.returncode, p.stdout
+    return deck
 
 
-def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--exe", required=True)
-    ap.add_argument("--work", required=True)
-    a = ap.parse_args()
-    shutil.rmtree(a.work, ignore_errors=True)
-    os.makedirs(a.work)
-    write_plane(os.path.join(a.work, "plane.stl"))
+def test_guards(ctx):
+    write_plane(os.path.join(ctx.work, "plane.stl"))
+    check(CASES, "no cases")
     failures = []
     for name, (body, pattern) in CASES.items():
-        code, out = run(a.exe, a.work, name, body)
-        errors = [l.strip() for l in out.splitlines() if l.startswith("ERROR")]
-        started = any(l.split()[:1] == ["Step"] for l in out.splitlines())
-        if code == 0 or not errors or not re.search(pattern, errors[0]):
-            failures.append(f"{name}: exit {code}, errors {errors or out[-1500:]!r}, wanted "
-                            f"/{pattern}/")
-        elif started:
-            failures.append(f"{name}: the run started before the error")
-        elif any(s in out for s in ("Segmentation", "signal", "core dumped")):
-            failures.append(f"{name}: crashed instead of a clean error")
-        else:
-            print(f"{name}: {errors[0]}")
-    code, out = run(a.exe, a.work, "allowed", ALLOWED)
-    atoms = [int(l.split()[1]) for l in out.splitlines() if re.match(r"^\s*\d+\s+\d+\s", l)]
-    if code != 0 or "ERROR" in out:
-        failures.append(f"allowed: exit {code}: {out[-2000:]}")
-    elif not atoms or atoms[-1] != 8:
-        failures.append(f"allowed: atom counts {atoms} in thermo, expected 2 + 6 inserted")
-    else:
-        print("allowed: gravity, property/global, mesh/surface, move/mesh, freeze, "
-              "particletemplate/sphere, particledistribution/discrete, insert/pack, tri/ styles, "
-              "property/atom, thermo and dump custom run (8 atoms)")
-    if failures:
-        print("FAIL guards:\n  " + "\n  ".join(failures))
-        return 1
-    print(f"PASS guards: {len(CASES)} refusals, 1 allowed deck")
-    return 0
-
-
-if __name__ == "__main__":
-    sys.exit(main())
+        try:
+            line, out = expect_error(ctx, write_deck(ctx.work, name, body), {}, pattern,
+                                     with_output=True)
+            check(re.search(pattern, line), f"the first error {line!r} is not /{pattern}/")
+            check(not any(l.split()[:1] == ["Step"] for l in out.splitlines()),
+                  "the run started before the error")
+            print(f"{name}: {line}")
+        except Failure as e:
+            failures.append(f"{name}: {e}")
+    check(not failures, "\n".join(failures))
+    _, out = run_deck(ctx, write_deck(ctx.work, "allowed", ALLOWED), timeout=300)
+    check("ERROR" not in out, f"allowed: {out[-2000:]}")
+    atoms = [int(r["Atoms"]) for r in thermo_rows(out)]
+    check(atoms and atoms[-1] == 8, f"allowed: atom counts {atoms} in thermo, expected 2 + 6 "
+                                    "inserted")
+    print("allowed: gravity, property/global, mesh/surface, move/mesh, freeze, "
+          "particletemplate/sphere, particledistribution/discrete, insert/pack, tri/ styles, "
+          f"property/atom, thermo and dump custom run (8 atoms); {len(CASES)} refusals")

@@ -1,4 +1,3 @@
-#!/usr/bin/env python3
 """LIGGGHTS's own insertion of triangulated particles: fix insert/stream, insert/pack or
 insert/rate/region with two particletemplate/sphere templates, a particledistribution/discrete
 of mass fractions 0.3 / 0.7, and two shapes of different mass (a 4 mm rock of 20 triangles, a
@@ -16,25 +15,19 @@ too densely for the real particles, and weigh them all the same. Checked:
     a region that ends at the floor), and at the first insertion no particle pair touches
     even with its soft layers (compute tri/stats pair, pairs_in_contact);
   * all requested particles were inserted.
-Modes: stream (templates defined before fix tri/particles, `template` keyword, particlerate),
+Tests insert_MODE, modes: stream (templates defined before fix tri/particles, `template` keyword, particlerate),
 pack (templates after it, `template` keyword, mass_in_region: the inserted mass is the asked
 one), rate_region (`assign type`: the templates' atom types 1 and 2 pick the shapes, massrate; the
 insert fix's `omega` is the particles' spin).
-Standard library only.
 
-With --ranks 2 the deck runs on two MPI ranks (processors 2 1 1: the insertion volume is cut
-in two, and particles inserted on one rank are ghosts on the other), with the same checks.
-
-usage: insertion_test.py MODE --exe LIGGGHTS_TRI --columns TRI_STATS_COLUMNS --work DIR
-                         [--ranks N]
+insert_stream_ranks: stream on two MPI ranks (processors 2 1 1: the insertion volume is cut in
+two, and particles inserted on one rank are ghosts on the other), with the same checks.
 """
-import argparse
 import math
 import os
 import re
-import shutil
-import subprocess
-import sys
+
+from decklib import check, last_frame, run_deck, stat, thermo_rows
 
 FRACTION_BIG = 0.3
 EPS = 1e-4
@@ -129,51 +122,25 @@ def square(z, h):
     return [[a, b, c], [a, c, d]]
 
 
-def stats_columns(tool):
-    out = subprocess.run([tool], stdout=subprocess.PIPE, text=True, check=True).stdout
-    return {l.split("\t")[1]: int(l.split("\t")[0]) for l in out.splitlines() if l}
-
-
-def deck(mode, columns, ranks):
+def deck(mode, ranks):
     m = MODES[mode]
     particles = PARTICLES.format(assign=m["assign"], eps=EPS)
     templates = TEMPLATES.format(type2=m["type2"])
     first, second = ((templates, particles) if m["order"] == "templates_first"
                      else (particles, templates))
     return HEAD.format(ranks=ranks) + first + second + TAIL.format(
-        fb=FRACTION_BIG, fs=1 - FRACTION_BIG, insert=m["insert"], pen=columns["penetrations"],
-        contacts=columns["pairs_in_contact"], steps=m["steps"])
+        fb=FRACTION_BIG, fs=1 - FRACTION_BIG, insert=m["insert"], pen=stat("penetrations"),
+        contacts=stat("pairs_in_contact"), steps=m["steps"])
 
 
-def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("mode", choices=sorted(MODES))
-    ap.add_argument("--exe", required=True)
-    ap.add_argument("--columns", required=True)
-    ap.add_argument("--work", required=True)
-    ap.add_argument("--ranks", type=int, default=1)
-    a = ap.parse_args()
-    m = MODES[a.mode]
-    shutil.rmtree(a.work, ignore_errors=True)
-    os.makedirs(a.work)
-    write_stl(os.path.join(a.work, "floor.stl"), square(0.0, 0.03))
-    write_stl(os.path.join(a.work, "face.stl"), square(0.09, 0.02))
-    columns = stats_columns(a.columns)
-    with open(os.path.join(a.work, "in.insert"), "w") as f:
-        f.write(deck(a.mode, columns, a.ranks))
-    cmd = [a.exe, "-in", "in.insert", "-log", "log.insert"]
-    if a.ranks > 1:
-        cmd = ["mpirun", "-np", str(a.ranks)] + cmd
-    env = dict(os.environ, OMP_NUM_THREADS="1", OMPI_ALLOW_RUN_AS_ROOT="1",
-               OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", OMPI_MCA_rmaps_base_oversubscribe="1")
-    p = subprocess.run(cmd, cwd=a.work, env=env, stdout=subprocess.PIPE,
-                       stderr=subprocess.STDOUT, text=True, errors="replace", timeout=600)
-    out = p.stdout
-    failures = []
-    if p.returncode != 0:
-        print(out[-3000:])
-        print(f"FAIL insertion {a.mode}: exit {p.returncode}")
-        return 1
+def insertion(ctx, mode, ranks=1):
+    m = MODES[mode]
+    write_stl(os.path.join(ctx.work, "floor.stl"), square(0.0, 0.03))
+    write_stl(os.path.join(ctx.work, "face.stl"), square(0.09, 0.02))
+    path = os.path.join(ctx.work, "in.insert")
+    with open(path, "w") as f:
+        f.write(deck(mode, ranks))
+    _, out = run_deck(ctx, path, ranks=ranks)
 
     # The info lines: template -> shape, its reach and mass.
     info = {}
@@ -184,51 +151,43 @@ def main():
     for line in out.splitlines():
         if line.startswith("tri/particles: template"):
             print(line)
-    if sorted(info) != ["pts1", "pts2"] or info["pts1"][0] != "big" or info["pts2"][0] != "small":
-        failures.append(f"info lines: {info}")
-        print("FAIL insertion:\n  " + "\n  ".join(failures))
-        return 1
+    check(sorted(info) == ["pts1", "pts2"] and info["pts1"][0] == "big"
+          and info["pts2"][0] == "small", f"info lines: {info}")
     shape_of = {0: info["pts1"], 1: info["pts2"]}   # shape index: big 0, small 1
 
     # Thermo: step atoms penetrations (particles and floor) particle_pairs_in_contact
-    rows = [l.split() for l in out.splitlines()]
-    rows = [[float(x) for x in r] for r in rows if len(r) == 4 and r[0].isdigit()]
-    if not rows:
-        failures.append("no thermo output")
-    for step, atoms, pen, contacts in rows:
-        if pen != 0:
-            failures.append(f"step {step:.0f}: {pen:.0f} intersecting surfaces ({atoms:.0f} atoms)")
-    first = next((r for r in rows if r[1] > 0), None)
-    if first is None:
-        failures.append("nothing was inserted")
-    elif first[3] != 0:
-        failures.append(f"step {first[0]:.0f}, the first insertion: {first[3]:.0f} particle pairs "
-                        "touch with their soft layers")
+    rows = thermo_rows(out, ("stats", "pstats"))
+    check(rows, "no thermo output")
+    for r in rows:
+        check(r["stats.penetrations"] == 0, f"step {r['Step']:.0f}: "
+              f"{r['stats.penetrations']:.0f} intersecting surfaces ({r['Atoms']:.0f} atoms)")
+    first = next((r for r in rows if r["Atoms"] > 0), None)
+    check(first is not None, "nothing was inserted")
+    check(first["pstats.pairs_in_contact"] == 0,
+          f"step {first['Step']:.0f}, the first insertion: {first['pstats.pairs_in_contact']:.0f} "
+          "particle pairs touch with their soft layers")
 
     # The final atoms: every one has a shape, with that shape's radius and mass.
-    with open(os.path.join(a.work, "final.dump")) as f:
-        lines = f.read().split("ITEM: ATOMS")[-1].splitlines()[1:]
-    atoms = [l.split() for l in lines if l.strip()]
+    _, final = last_frame(os.path.join(ctx.work, "final.dump"))
+    atoms = [[str(tag)] + r for tag, r in final.items()]
+    check(atoms, "no atoms in the final dump")
     count = {0: 0, 1: 0}
     values = {}
     spin = [float(r[5]) for r in atoms]
     for tag, typ, radius, mass, shape, _ in atoms:
         s = float(shape)
-        if s not in (0.0, 1.0):
-            failures.append(f"atom {tag}: shape {shape}")
-            continue
+        check(s in (0.0, 1.0), f"atom {tag}: shape {shape}")
         name, reach, smass = shape_of[int(s)]
         count[int(s)] += 1
         # The info line prints 6 digits; all atoms of one shape must agree exactly.
-        if abs(float(radius) - reach) > 1e-5 * reach or abs(float(mass) - smass) > 1e-5 * smass:
-            failures.append(f"atom {tag} ({name}): radius {radius}, mass {mass}; the shape has "
-                            f"{reach} and {smass}")
+        check(abs(float(radius) - reach) <= 1e-5 * reach and abs(float(mass) - smass) <= 1e-5 * smass,
+              f"atom {tag} ({name}): radius {radius}, mass {mass}; the shape has {reach} and "
+              f"{smass}")
         values.setdefault(int(s), set()).add((radius, mass))
-        if a.mode == "rate_region" and int(typ) != int(s) + 1:
-            failures.append(f"atom {tag}: type {typ} but shape {name} ('assign type')")
+        if mode == "rate_region":
+            check(int(typ) == int(s) + 1, f"atom {tag}: type {typ} but shape {name} ('assign type')")
     for s, v in values.items():
-        if len(v) != 1:
-            failures.append(f"shape {shape_of[s][0]}: its atoms differ in radius or mass: {v}")
+        check(len(v) == 1, f"shape {shape_of[s][0]}: its atoms differ in radius or mass: {v}")
     n = len(atoms)
     m_big, m_small = shape_of[0][2], shape_of[1][2]
     mass_big, mass_all = count[0] * m_big, count[0] * m_big + count[1] * m_small
@@ -236,30 +195,39 @@ def main():
     p_big = (FRACTION_BIG / m_big) / (FRACTION_BIG / m_big + (1 - FRACTION_BIG) / m_small)
     sigma = math.sqrt(n * p_big * (1 - p_big)) if n else 0.0
     frac = mass_big / mass_all if mass_all else float("nan")
-    print(f"{a.mode}: {n} particles, {count[0]} big ({m_big:.4g} kg) and {count[1]} small "
+    print(f"{mode}: {n} particles, {count[0]} big ({m_big:.4g} kg) and {count[1]} small "
           f"({m_small:.4g} kg): mass fraction of big {frac:.4f} (asked {FRACTION_BIG}); "
           f"{count[0]} big against {n * p_big:.1f} +- {sigma:.1f} expected; inserted mass "
           f"{mass_all:.5g} kg")
-    if not abs(count[0] - n * p_big) <= 3 * sigma + 1:
-        failures.append(f"{count[0]} big particles of {n}, expected {n * p_big:.1f} +- "
-                        f"{3 * sigma:.1f} (mass fraction {frac:.3f} instead of {FRACTION_BIG})")
+    check(abs(count[0] - n * p_big) <= 3 * sigma + 1,
+          f"{count[0]} big particles of {n}, expected {n * p_big:.1f} +- {3 * sigma:.1f} (mass "
+          f"fraction {frac:.3f} instead of {FRACTION_BIG})")
     if "omega" in m:  # free rotation moves omega about L, but keeps it near the start value
-        mean = sum(spin) / len(spin) if spin else 0.0
-        print(f"{a.mode}: mean omega_z at the end {mean:.4g} rad/s, inserted with {m['omega']}")
-        if not abs(mean - m["omega"]) < 0.2 * m["omega"]:
-            failures.append(f"mean omega_z {mean}: the insert fix's omega {m['omega']} was lost")
-    if "count" in m and n != m["count"]:
-        failures.append(f"{n} particles inserted, {m['count']} asked")
-    if "mass" in m and not abs(mass_all - m["mass"]) <= 2 * m_big:
-        failures.append(f"inserted mass {mass_all} kg, mass_in_region asked {m['mass']} kg")
-
-    if failures:
-        print("FAIL insertion:\n  " + "\n  ".join(failures[:20]))
-        return 1
-    print(f"PASS insertion {a.mode} ({a.ranks} rank(s)): no intersections in {len(rows)} steps, no particle pair "
-          f"within reach at the first insertion (step {first[0]:.0f}, {first[1]:.0f} atoms)")
-    return 0
+        mean = sum(spin) / len(spin)
+        print(f"{mode}: mean omega_z at the end {mean:.4g} rad/s, inserted with {m['omega']}")
+        check(abs(mean - m["omega"]) < 0.2 * m["omega"],
+              f"mean omega_z {mean}: the insert fix's omega {m['omega']} was lost")
+    if "count" in m:
+        check(n == m["count"], f"{n} particles inserted, {m['count']} asked")
+    if "mass" in m:
+        check(abs(mass_all - m["mass"]) <= 2 * m_big,
+              f"inserted mass {mass_all} kg, mass_in_region asked {m['mass']} kg")
+    print(f"insertion {mode} ({ranks} rank(s)): no intersections in {len(rows)} steps, no "
+          f"particle pair within reach at the first insertion (step {first['Step']:.0f}, "
+          f"{first['Atoms']:.0f} atoms)")
 
 
-if __name__ == "__main__":
-    sys.exit(main())
+def test_insert_stream(ctx):
+    insertion(ctx, "stream")
+
+
+def test_insert_pack(ctx):
+    insertion(ctx, "pack")
+
+
+def test_insert_rate_region(ctx):
+    insertion(ctx, "rate_region")
+
+
+def test_insert_stream_ranks(ctx):
+    insertion(ctx, "stream", ranks=2)

@@ -1,4 +1,3 @@
-#!/usr/bin/env python3
 """`orient file` against `orient none` for a file shape whose principal frame is turned against
 the file's own: an L prism (legs of equal length, so its in-plane principal axes lie along the
 diagonals, 45 degrees from the file's x and y), written here, off the origin, as an STL.
@@ -12,16 +11,12 @@ of the quaternion f_shapes[2..5]:
     file's), centred on the atom (mean of the triangles' volume-weighted centroids = x_atom),
     axes of the principal frame along the world's (the diagonal leg direction on x or y).
 Coordinates are powers of two, so the STL's single-precision floats hold them exactly.
-Standard library only.
-
-usage: orient_test.py --exe LIGGGHTS_TRI --vtkdump TRI_VTK_DUMP --work DIR
 """
-import argparse
 import math
 import os
-import shutil
 import subprocess
-import sys
+
+from decklib import check, last_frame, run_deck
 
 A = 2.0 ** -9             # leg unit: the outline (0,0) (2a,0) (2a,a) (a,a) (a,2a) (0,2a), m
 H = 2.0 ** -10            # prism height, m
@@ -89,67 +84,57 @@ def quat_matrix(w, x, y, z):
             [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]]
 
 
-def run(a, orient):
-    with open(os.path.join(a.work, f"in.{orient}"), "w") as f:
+def run(ctx, orient):
+    deck = os.path.join(ctx.work, f"in.{orient}")
+    with open(deck, "w") as f:
         f.write(DECK.format(x=ATOM[0], y=ATOM[1], z=ATOM[2], orient=orient))
-    p = subprocess.run([a.exe, "-in", f"in.{orient}", "-log", "none"], cwd=a.work,
-                       env=dict(os.environ, OMP_NUM_THREADS="1"), stdout=subprocess.PIPE,
-                       stderr=subprocess.STDOUT, text=True, errors="replace", timeout=300)
-    if p.returncode != 0:
-        raise RuntimeError(f"orient {orient}: exit {p.returncode}\n{p.stdout[-3000:]}")
-    d = subprocess.run([a.vtkdump, os.path.join(a.work, "post", f"{orient}_0.vtp"), "id", "points"],
-                       stdout=subprocess.PIPE, text=True, check=True).stdout
+    run_deck(ctx, deck, timeout=300)
+    d = subprocess.run([ctx.vtkdump, os.path.join(ctx.work, "post", f"{orient}_0.vtp"), "id",
+                        "points"], stdout=subprocess.PIPE, text=True, check=True).stdout
     cells = [[float(x) for x in l.split()[1:]] for l in d.splitlines() if l and l[0] != "#"]
-    with open(os.path.join(a.work, f"{orient}.dump")) as f:
-        row = [float(x) for x in f.read().split("ITEM: ATOMS")[1].splitlines()[1].split()]
-    return [[c[0:3], c[3:6], c[6:9]] for c in cells], row[1:4], row[4:8]
+    _, atoms = last_frame(os.path.join(ctx.work, f"{orient}.dump"))
+    check(set(atoms) == {1}, f"orient {orient}: atoms {sorted(atoms)} in the dump")
+    row = [float(x) for x in atoms[1]]
+    return [[c[0:3], c[3:6], c[6:9]] for c in cells], row[0:3], row[3:7]
 
 
-def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--exe", required=True)
-    ap.add_argument("--vtkdump", required=True)
-    ap.add_argument("--work", required=True)
-    a = ap.parse_args()
-    shutil.rmtree(a.work, ignore_errors=True)
-    os.makedirs(os.path.join(a.work, "post"))
+def test_orient(ctx):
+    os.makedirs(os.path.join(ctx.work, "post"))
     tris = l_prism()
-    write_stl(os.path.join(a.work, "ell.stl"), tris)
+    write_stl(os.path.join(ctx.work, "ell.stl"), tris)
     c = centre_of_mass()
-    failures = []
 
     # orient file: the file's triangles, translated so that c lands on the atom.
-    cells, x, q = run(a, "file")
+    cells, x, q = run(ctx, "file")
     shift = [x[k] - c[k] for k in range(3)]
-    if len(cells) != len(tris):
-        failures.append(f"orient file: {len(cells)} triangles in the .vtp, the file has {len(tris)}")
+    check(len(cells) == len(tris),
+          f"orient file: {len(cells)} triangles in the .vtp, the file has {len(tris)}")
     worst = 0.0
     for t, cell in zip(tris, cells):
         for p, w in zip(t, cell):
             worst = max(worst, max(abs(w[k] - (p[k] + shift[k])) for k in range(3)))
     print(f"orient file: x {x}, q {q}; .vtp corners against file + (x - c): largest "
           f"difference {worst:.3g} m")
-    if worst > TOL:
-        failures.append(f"orient file: the .vtp triangles are {worst:.3g} m off the file's")
+    check(worst <= TOL, f"orient file: the .vtp triangles are {worst:.3g} m off the file's")
     r = quat_matrix(*q)
     ez = [r[k][2] for k in range(3)]
     ex = [r[k][0] for k in range(3)]
-    if abs(abs(ez[2]) - 1) > 1e-12:
-        failures.append(f"orient file: the rotation moves the prism's axis z: R e_z = {ez}")
-    if abs(abs(ex[0]) - math.sqrt(0.5)) > 1e-12 or abs(abs(ex[1]) - math.sqrt(0.5)) > 1e-12:
-        failures.append(f"orient file: R e_x = {ex} is not along a diagonal (45 degrees)")
+    check(abs(abs(ez[2]) - 1) <= 1e-12,
+          f"orient file: the rotation moves the prism's axis z: R e_z = {ez}")
+    check(abs(abs(ex[0]) - math.sqrt(0.5)) <= 1e-12 and abs(abs(ex[1]) - math.sqrt(0.5)) <= 1e-12,
+          f"orient file: R e_x = {ex} is not along a diagonal (45 degrees)")
 
     # orient none: identity quaternion; the principal frame on the world axes, turned 45 degrees
     # against the file, the centre of mass on the atom.
-    cells, x, q = run(a, "none")
-    if q != [1.0, 0.0, 0.0, 0.0]:
-        failures.append(f"orient none: quaternion {q}, expected 1 0 0 0")
+    cells, x, q = run(ctx, "none")
+    check(q == [1.0, 0.0, 0.0, 0.0], f"orient none: quaternion {q}, expected 1 0 0 0")
+    check(len(cells) == len(tris),
+          f"orient none: {len(cells)} triangles in the .vtp, the file has {len(tris)}")
     far = 0.0
     for t, cell in zip(tris, cells):
         for p, w in zip(t, cell):
             far = max(far, max(abs(w[k] - (p[k] + shift[k])) for k in range(3)))
-    if far < 1e-4:
-        failures.append(f"orient none: the triangles are the file's ({far:.3g} m): not turned")
+    check(far >= 1e-4, f"orient none: the triangles are the file's ({far:.3g} m): not turned")
     vol, centre = 0.0, [0.0, 0.0, 0.0]
     for p0, p1, p2 in cells:
         v6 = (p0[0] * (p1[1] * p2[2] - p1[2] * p2[1]) - p0[1] * (p1[0] * p2[2] - p1[2] * p2[0])
@@ -161,10 +146,9 @@ def main():
     off = max(abs(centre[k] - x[k]) for k in range(3))
     print(f"orient none: q {q}; centre of mass of the .vtp surface {centre}, atom {x}; "
           f"triangles {far:.3g} m from the file's")
-    if off > 1e-12:
-        failures.append(f"orient none: centre of mass {centre} is not the atom's position {x}")
-    if abs(vol - 3 * A * A * H) > 1e-9 * vol:
-        failures.append(f"orient none: volume {vol}, expected {3 * A * A * H}")
+    check(off <= 1e-12, f"orient none: centre of mass {centre} is not the atom's position {x}")
+    check(abs(vol - 3 * A * A * H) <= 1e-9 * vol,
+          f"orient none: volume {vol}, expected {3 * A * A * H}")
     # The L's symmetry axis (the diagonal from the outer corner) lies on a world axis: some
     # corners share their x or y coordinate with the centre along a whole leg, which is only
     # so when the diagonals map to x/y. Test it: all corner coordinates, relative to the
@@ -177,16 +161,5 @@ def main():
                 u = (w[k] - x[k]) / unit
                 if abs(u - round(u)) > 1e-6:
                     bad += 1
-    if bad:
-        failures.append(f"orient none: {bad} corner coordinates not on the diagonal grid: the "
-                        "principal axes are not the world axes")
-
-    if failures:
-        print("FAIL orient:\n  " + "\n  ".join(failures))
-        return 1
-    print("PASS orient")
-    return 0
-
-
-if __name__ == "__main__":
-    sys.exit(main())
+    check(not bad, f"orient none: {bad} corner coordinates not on the diagonal grid: the "
+                   "principal axes are not the world axes")

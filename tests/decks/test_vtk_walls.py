@@ -1,4 +1,3 @@
-#!/usr/bin/env python3
 """fix tri/vtk's orientation and torque cell arrays and its wall meshes, read back through VTK
 (tri-vtk-dump). Four rocks fall onto a floor that fix move/mesh lifts at 0.05 m/s, under a
 static lid; three fix tri/vtk write the same frames with `walls` at its default (every mesh),
@@ -10,20 +9,14 @@ static lid; three fix tri/vtk write the same frames with `walls` at its default 
   * the .pvd series: post/p_walls.pvd has one part per mesh and frame, named by the mesh ID;
     walls lid writes only the lid, walls no no wall file;
   * the same deck on 2 MPI ranks writes byte-identical wall files (gathered, ordered by ID).
-Standard library only.
-
-usage: vtk_walls_test.py --exe LIGGGHTS_TRI --vtkdump TRI_VTK_DUMP --work DIR
 """
-import argparse
 import glob
 import os
 import re
-import shutil
 import subprocess
-import sys
 
-ENV = {"OMPI_ALLOW_RUN_AS_ROOT": "1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM": "1",
-       "OMPI_MCA_rmaps_base_oversubscribe": "1", "OMP_NUM_THREADS": "1"}
+from decklib import check, expect_error, run_deck, snapshots, stat, subdir, thermo_rows
+
 DT, EVERY, STEPS, VZ = 1e-5, 100, 600, 0.05
 HALF, LID_Z = 0.015, 0.025
 
@@ -65,21 +58,12 @@ fix out all tri/vtk every {every} file post/p
 fix only_lid all tri/vtk every {every} file post/q walls lid
 fix no_walls all tri/vtk every {every} file post/r walls no
 compute stats all tri/stats
-thermo_style    custom step atoms ke c_stats[2]
+thermo_style    custom step atoms ke c_stats[{contacts}]
 thermo          {every}
 dump d all custom {every} spin.dump id tqx tqy tqz f_shapes[2] f_shapes[3] f_shapes[4] f_shapes[5]
 dump_modify d sort id format "%d %.17g %.17g %.17g %.17g %.17g %.17g %.17g"
 run {steps}
 """
-
-
-class Failure(Exception):
-    pass
-
-
-def check(cond, message):
-    if not cond:
-        raise Failure(message)
 
 
 def write_square(path, z, nx=2):
@@ -100,26 +84,29 @@ def write_square(path, z, nx=2):
         f.write("endsolid s\n")
 
 
-def run(exe, work, ranks, replace=None, expect_ok=True):
-    """Runs DECK in `work` (with `replace` = (old, new) applied to it); returns the output."""
-    os.makedirs(work)
-    write_square(os.path.join(work, "floor.stl"), 0.0)
-    write_square(os.path.join(work, "lid.stl"), LID_Z, nx=1)
-    deck = DECK.format(px=ranks, dt=DT, vz=VZ, every=EVERY, steps=STEPS)
+def write_deck(ctx, work_name, ranks, replace=None):
+    """DECK and its meshes in a new folder ctx.work/work_name (with `replace` = (old, new)
+    applied to the deck); returns (context of that folder, deck path)."""
+    sub = subdir(ctx, work_name)
+    write_square(os.path.join(sub.work, "floor.stl"), 0.0)
+    write_square(os.path.join(sub.work, "lid.stl"), LID_Z, nx=1)
+    deck = DECK.format(px=ranks, dt=DT, vz=VZ, every=EVERY, steps=STEPS,
+                       contacts=stat("pairs_in_contact"))
     if replace:
         check(replace[0] in deck, f"no {replace[0]!r} in the deck")
         deck = deck.replace(*replace)
-    with open(os.path.join(work, "in.walls"), "w") as f:
+    path = os.path.join(sub.work, "in.walls")
+    with open(path, "w") as f:
         f.write(deck)
-    cmd = [exe, "-in", "in.walls", "-log", "none"]
-    if ranks > 1:
-        cmd = ["mpirun", "-np", str(ranks)] + cmd
-    p = subprocess.run(cmd, cwd=work, env=dict(os.environ, **ENV), stdout=subprocess.PIPE,
-                       stderr=subprocess.STDOUT, text=True, errors="replace", timeout=600)
-    if expect_ok:
-        check(p.returncode == 0 and "ERROR" not in p.stdout,
-              f"{' '.join(cmd)} exited {p.returncode}:\n{p.stdout[-3000:]}")
-    return p.stdout
+    return sub, path
+
+
+def run(ctx, work_name, ranks):
+    """Runs DECK on `ranks` ranks in ctx.work/work_name; returns the screen output."""
+    sub, deck = write_deck(ctx, work_name, ranks)
+    _, out = run_deck(sub, deck, ranks=ranks)
+    check("ERROR" not in out, f"{deck}, {ranks} rank(s):\n{out[-3000:]}")
+    return out
 
 
 def cells(vtkdump, path, *arrays):
@@ -129,18 +116,8 @@ def cells(vtkdump, path, *arrays):
             if l and not l.startswith("#")]
 
 
-def dump_frames(path):
-    frames, lines = {}, open(path).read().splitlines()
-    for k, line in enumerate(lines):
-        if line.startswith("ITEM: TIMESTEP"):
-            step = int(lines[k + 1])
-            n = int(lines[k + 3])
-            frames[step] = {int(r.split()[0]): r.split()[1:] for r in lines[k + 9:k + 9 + n]}
-    return frames
-
-
 def check_particles(vtkdump, work):
-    frames = dump_frames(os.path.join(work, "spin.dump"))
+    frames = dict(snapshots(os.path.join(work, "spin.dump")))
     check(sorted(frames) == list(range(0, STEPS + 1, EVERY)), f"dump steps {sorted(frames)}")
     largest_torque = 0.0
     for step, atoms in frames.items():
@@ -197,45 +174,27 @@ def check_walls(vtkdump, work):
     check(os.path.exists(os.path.join(post, "r.pvd")), "walls no: no particle series")
 
 
-def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--exe", required=True)
-    ap.add_argument("--vtkdump", required=True)
-    ap.add_argument("--work", required=True)
-    a = ap.parse_args()
-    shutil.rmtree(a.work, ignore_errors=True)
-    try:
-        out = run(a.exe, os.path.join(a.work, "np1"), 1)
-        contacts = max(float(l.split()[3]) for l in out.splitlines()
-                       if re.match(r"^\s*\d+\s+4\s", l))
-        torque = check_particles(a.vtkdump, os.path.join(a.work, "np1"))
-        check_walls(a.vtkdump, os.path.join(a.work, "np1"))
-        print(f"1 rank: orientation and torque equal to the dump in {STEPS // EVERY + 1} "
-              f"frames (largest torque {torque:.3g} N m, up to {contacts:.0f} contacts); floor "
-              f"and lid frames where move/mesh put them")
-        run(a.exe, os.path.join(a.work, "np2"), 2)
-        check_walls(a.vtkdump, os.path.join(a.work, "np2"))
-        names = sorted(os.path.basename(p) for p in
-                       glob.glob(os.path.join(a.work, "np1", "post", "*_walls_*.vtp")))
-        for n in names:
-            one = open(os.path.join(a.work, "np1", "post", n), "rb").read()
-            two = open(os.path.join(a.work, "np2", "post", n), "rb").read()
-            check(one == two, f"{n} differs between 1 and 2 ranks")
-        print(f"2 ranks: {len(names)} wall files byte-identical to 1 rank's")
-        out = run(a.exe, os.path.join(a.work, "bad"), 1, ("walls lid", "walls lid grav"),
-                  expect_ok=False)
-        err = [l for l in out.splitlines() if l.startswith("ERROR")]
-        want = ("Fix tri/vtk: 'walls' expects yes, no or IDs of fix mesh/surface, got "
-                "'grav'")
-        check(err and want in err[0], f"walls lid grav: errors {err or out[-1500:]}, wanted "
-                                      f"{want!r}")
-        print(f"walls lid grav: {err[0]}")
-    except Failure as e:
-        print(f"FAIL vtk_walls: {e}")
-        return 1
-    print("PASS vtk_walls")
-    return 0
-
-
-if __name__ == "__main__":
-    sys.exit(main())
+def test_vtk_walls(ctx):
+    out = run(ctx, "np1", 1)
+    rows = [r for r in thermo_rows(out) if r["Atoms"] == 4]
+    check(rows, "no thermo rows with the 4 particles")
+    contacts = max(r["stats.pairs_in_contact"] for r in rows)
+    torque = check_particles(ctx.vtkdump, os.path.join(ctx.work, "np1"))
+    check_walls(ctx.vtkdump, os.path.join(ctx.work, "np1"))
+    print(f"1 rank: orientation and torque equal to the dump in {STEPS // EVERY + 1} "
+          f"frames (largest torque {torque:.3g} N m, up to {contacts:.0f} contacts); floor "
+          f"and lid frames where move/mesh put them")
+    run(ctx, "np2", 2)
+    check_walls(ctx.vtkdump, os.path.join(ctx.work, "np2"))
+    names = sorted(os.path.basename(p) for p in
+                   glob.glob(os.path.join(ctx.work, "np1", "post", "*_walls_*.vtp")))
+    check(names, "no wall files on 1 rank")
+    for n in names:
+        one = open(os.path.join(ctx.work, "np1", "post", n), "rb").read()
+        two = open(os.path.join(ctx.work, "np2", "post", n), "rb").read()
+        check(one == two, f"{n} differs between 1 and 2 ranks")
+    print(f"2 ranks: {len(names)} wall files byte-identical to 1 rank's")
+    sub, deck = write_deck(ctx, "bad", 1, ("walls lid", "walls lid grav"))
+    line = expect_error(sub, deck, {}, re.escape("Fix tri/vtk: 'walls' expects yes, no or IDs "
+                                                 "of fix mesh/surface, got 'grav'"))
+    print(f"walls lid grav: {line}")
