@@ -27,7 +27,7 @@ import math
 import os
 import re
 
-from decklib import check, last_frame, run_deck, stat, thermo_rows
+from decklib import check, last_frame, run_deck, stat, thermo_rows, write_stl
 
 FRACTION_BIG = 0.3
 EPS = 1e-4
@@ -104,17 +104,6 @@ MODES = {
                "vel constant 0 0 0 omega constant 0 0 50 region ins",
         steps=1100, count=120, omega=50.0),
 }
-
-
-def write_stl(path, triangles):
-    with open(path, "w") as f:
-        f.write("solid t\n")
-        for t in triangles:
-            f.write(" facet normal 0 0 0\n  outer loop\n")
-            for p in t:
-                f.write("   vertex %r %r %r\n" % tuple(p))
-            f.write("  endloop\n endfacet\n")
-        f.write("endsolid t\n")
 
 
 def square(z, h):

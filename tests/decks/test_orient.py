@@ -16,7 +16,7 @@ import math
 import os
 import subprocess
 
-from decklib import check, last_frame, run_deck
+from decklib import check, last_frame, run_deck, write_stl
 
 A = 2.0 ** -9             # leg unit: the outline (0,0) (2a,0) (2a,a) (a,a) (a,2a) (0,2a), m
 H = 2.0 ** -10            # prism height, m
@@ -65,17 +65,6 @@ def centre_of_mass():
     cx = (2 * A * A * A + A * A * 0.5 * A) / (3 * A * A)
     cy = (2 * A * A * 0.5 * A + A * A * 1.5 * A) / (3 * A * A)
     return (OFFSET[0] + cx, OFFSET[1] + cy, OFFSET[2] + H / 2)
-
-
-def write_stl(path, triangles):
-    with open(path, "w") as f:
-        f.write("solid ell\n")
-        for t in triangles:
-            f.write(" facet normal 0 0 0\n  outer loop\n")
-            for p in t:
-                f.write("   vertex %r %r %r\n" % p)
-            f.write("  endloop\n endfacet\n")
-        f.write("endsolid ell\n")
 
 
 def quat_matrix(w, x, y, z):
