@@ -61,7 +61,17 @@ PairForceResult body_interaction(const Body &a, const Body &b, const Interaction
   reduce_contacts(scratch.triangle_contacts.data(),
                   static_cast<int>(scratch.triangle_contacts.size()), *a.triangles, a.epsilon,
                   *b.triangles, b.epsilon, params, scratch.reduction, scratch.points);
-  return pair_contact_force(scratch.points, a.state, b.state, s.coefficients, dt, history);
+  const double layer = a.epsilon + b.epsilon;
+  SurfaceSide side_a, side_b;
+  side_b.wall = b.is_wall();
+  side_b.particle_centre = a.state.x;
+  deepen_contacts(*a.triangles, side_a, *b.triangles, side_b, layer, params.reference_direction,
+                  params.link_length, scratch.points, scratch.depth);
+  PairForceResult r =
+      pair_contact_force(scratch.points, a.state, b.state, s.coefficients, dt, history);
+  r.layer = layer;
+  r.depth_limit = deep_contact_limit(a.thinnest, b.thinnest);
+  return r;
 }
 
 } // namespace tri

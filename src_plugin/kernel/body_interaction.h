@@ -7,8 +7,10 @@
 
 #include "contact_force.h"
 #include "particle_contacts.h"
+#include "penetration_depth.h"
 
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace tri {
@@ -25,6 +27,7 @@ struct InteractionScratch {
   std::vector<TriangleContact> triangle_contacts;
   std::vector<ContactPoint> points;
   ReductionWorkspace reduction;
+  DepthScratch depth;
   // A wall patch's corners and their velocities, gathered by the host (fix tri/wall).
   std::vector<Eigen::Vector3d> nodes, node_velocities;
 
@@ -39,6 +42,9 @@ struct Body {
   double epsilon = 0.0;                   // soft-layer width, m
   double longest_edge = 0.0;              // m; infinity for a wall patch
   double min_edge = 0.0;                  // m, the paper's minimum mesh width
+  // m, the shape's thinnest extent (penetration_depth.h: sets how deep a contact may be);
+  // infinity for a wall patch
+  double thinnest = std::numeric_limits<double>::infinity();
   BodyState state;                        // mass <= 0 for a wall
 
   bool is_wall() const { return !(state.mass > 0.0); }
@@ -49,7 +55,9 @@ struct Body {
 // no_history). Statistics of the distance kernel are added to `stats`. The reference direction
 // of the reduction (contact_reduction.h: for intersecting triangles without a usable normal)
 // is the line of centres for two particles, and for a wall the direction from a's centre to
-// the closest point of the patch.
+// the closest point of the patch. Contacts whose real surfaces intersect get their depth through
+// the intersection (penetration_depth.h) before the force law; the result carries the combined
+// layer and the resolvable depth so that the host can stop a contact deeper than that.
 PairForceResult body_interaction(const Body &a, const Body &b, const InteractionSettings &s,
                                  double dt, double *history, InteractionScratch &scratch,
                                  ContactStats &stats);

@@ -36,6 +36,15 @@ struct PairForceResult {
   double max_overlap = 0.0; // m, deepest penetration of the soft layers
   double min_distance = std::numeric_limits<double>::infinity(); // m, closest triangle pair
   bool intersecting = false; // some triangles intersect (the soft layer was overrun)
+  // Set by body_interaction (penetration_depth.h): the combined soft layer eps_a + eps_b (m) and
+  // the deepest the real surfaces may intersect, max_overlap - layer (m; infinity: no limit).
+  double layer = 0.0;
+  double depth_limit = std::numeric_limits<double>::infinity();
+  // How far beyond the layer the deepest contact reaches, in units of depth_limit (> 1: deeper
+  // than the model resolves); 0 when the surfaces do not intersect.
+  double depth_of_limit() const {
+    return intersecting && max_overlap > layer ? (max_overlap - layer) / depth_limit : 0.0;
+  }
 };
 
 // `history`: kHistoryDoubles values of this pair, read and rewritten (tangential `history`

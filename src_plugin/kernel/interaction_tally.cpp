@@ -14,6 +14,11 @@ void InteractionTally::add(const PairForceResult &r) {
     ++penetrations;
   max_overlap = std::max(max_overlap, r.max_overlap);
   min_distance = std::min(min_distance, r.min_distance);
+  if (r.intersecting && r.max_overlap > r.layer)
+    ++deep_contacts;
+  if (r.layer > 0.0)
+    max_overlap_layers = std::max(max_overlap_layers, r.max_overlap / r.layer);
+  max_depth_of_limit = std::max(max_depth_of_limit, r.depth_of_limit());
 }
 
 InteractionTally &InteractionTally::operator+=(const InteractionTally &o) {
@@ -64,6 +69,13 @@ StatColumn length_column(const char *name, const char *meaning, StatReduction re
   return c;
 }
 
+// A dimensionless maximum.
+StatColumn ratio_column(const char *name, const char *meaning, double *(*field)(Tally &)) {
+  StatColumn c{name, "1", meaning, StatReduction::max};
+  c.length = field;
+  return c;
+}
+
 std::vector<StatColumn> make_columns() {
   std::vector<StatColumn> c = {
       count_column("pairs_checked", "body pairs whose bounding spheres overlap (triangles examined)",
@@ -106,6 +118,19 @@ std::vector<StatColumn> make_columns() {
   c.push_back(count_column("triangle_contacts",
                            "triangle pairs the distance kernel reported within the soft layers",
                            [](Tally &t, int) { return &t.distance.contacts; }));
+  // Deep contacts (penetration_depth.h), appended.
+  c.push_back(count_column("deep_contacts",
+                           "body pairs whose real surfaces intersect deeper than the soft layers "
+                           "(overlap measured through the intersection)",
+                           [](Tally &t, int) { return &t.deep_contacts; }));
+  c.push_back(ratio_column("max_overlap_layers",
+                           "deepest overlap in units of its combined soft layer (> 1: the real "
+                           "surfaces intersect)",
+                           [](Tally &t) { return &t.max_overlap_layers; }));
+  c.push_back(ratio_column("max_depth_of_limit",
+                           "deepest intersection past the soft layers as a fraction of the "
+                           "resolvable depth (> 1 stops the run)",
+                           [](Tally &t) { return &t.max_depth_of_limit; }));
   return c;
 }
 

@@ -25,6 +25,12 @@ struct InteractionTally {
   double max_overlap = 0.0;            // m, deepest soft-layer overlap
   double min_distance = std::numeric_limits<double>::infinity(); // m, closest triangle pair
   ContactStats distance;               // the distance kernel's own counters
+  // Contacts deeper than the combined soft layer (penetration_depth.h): the count, the deepest
+  // overlap in units of its layer, and the deepest depth past the layer as a fraction of what
+  // the model resolves (> 1: the host stops the run).
+  long long deep_contacts = 0;
+  double max_overlap_layers = 0.0;
+  double max_depth_of_limit = 0.0;
 
   void add(const PairForceResult &r); // one interaction
   InteractionTally &operator+=(const InteractionTally &o);

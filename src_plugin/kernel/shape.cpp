@@ -1,6 +1,7 @@
 #include "shape.h"
 
 #include "mesh_validation.h"
+#include "penetration_depth.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -154,6 +155,7 @@ Shape make_shape(std::string name, TriangleMesh mesh) {
     }
   shape.min_edge_length = std::sqrt(e2_min);
   shape.max_edge_length = std::sqrt(e2_max);
+  shape.thinnest_extent = thinnest_extent(shape.soa);
   shape.mean_edge_length = sum / (3.0 * shape.mesh.num_triangles());
 
   shape.convex = is_convex(shape.mesh, kConvexityTolerance * 2.0 * shape.bounding_radius);

@@ -42,6 +42,8 @@ struct Shape {
   double max_edge_length = 0.0; // longest triangle edge, m (sets the contact-patch link length)
   double mean_edge_length = 0.0; // mean over the 3 edges of every triangle, m (the mesh's
                                  // resolution against the soft layer: fix tri/particles)
+  // The smallest extent of the vertices along the principal axes, m (penetration_depth.h).
+  double thinnest_extent = 0.0;
   bool convex = false;          // every vertex on or behind every face plane (kConvexityTolerance)
   // The principal axes as columns, in the input frame: the rotation from the body (principal)
   // frame to the input frame (orthonormal, determinant +1; MassProperties::principal_axes).

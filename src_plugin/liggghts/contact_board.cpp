@@ -10,7 +10,7 @@ int ContactBoard::join(const std::string &id, SourceKind kind) {
       sources_[k].kind = kind;
       return static_cast<int>(k);
     }
-  sources_.push_back({id, kind, {}, {}, false, {}});
+  sources_.push_back({id, kind, {}, {}, {}, false, {}});
   return static_cast<int>(sources_.size()) - 1;
 }
 
@@ -19,6 +19,35 @@ void ContactBoard::publish(int slot, const tri::InteractionTally &tally, Interse
     throw std::out_of_range("ContactBoard::publish: no source in slot " + std::to_string(slot));
   sources_[slot].tally = tally;
   sources_[slot].first = first;
+}
+
+void ContactBoard::publish_deepest(int slot, const DeepestContact &deepest) {
+  if (slot < 0 || slot >= static_cast<int>(sources_.size()))
+    throw std::out_of_range("ContactBoard::publish_deepest: no source in slot " +
+                            std::to_string(slot));
+  sources_[slot].deepest = deepest;
+}
+
+DeepestContact ContactBoard::deepest() const {
+  DeepestContact d;
+  for (const Source &s : sources_)
+    if (s.deepest.depth_of_limit > d.depth_of_limit)
+      d = s.deepest;
+  return d;
+}
+
+void DeepestContact::consider(const tri::PairForceResult &r, long a, long b,
+                              const std::string &wall_id) {
+  const double ratio = r.depth_of_limit();
+  if (!(ratio > depth_of_limit))
+    return;
+  depth_of_limit = ratio;
+  overlap = r.max_overlap;
+  layer = r.layer;
+  limit = r.depth_limit;
+  tag_a = a;
+  tag_b = b;
+  wall = wall_id;
 }
 
 void ContactBoard::publish_material(int slot, const MaterialHint &hint) {
@@ -41,6 +70,7 @@ void ContactBoard::clear_tallies() {
   for (Source &s : sources_) {
     s.tally = tri::InteractionTally{};
     s.first = IntersectingPair{};
+    s.deepest = DeepestContact{};
   }
 }
 

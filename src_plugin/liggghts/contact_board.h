@@ -36,6 +36,18 @@ struct IntersectingPair {
   bool found() const { return tag_a != 0; }
 };
 
+// The contact of an evaluation that reaches deepest past its soft layers, relative to the depth
+// the model resolves (penetration_depth.h), for the run-safety error. depth_of_limit 0: none.
+struct DeepestContact {
+  double depth_of_limit = 0.0; // (overlap - layer) / limit
+  double overlap = 0.0, layer = 0.0, limit = 0.0; // m
+  long tag_a = 0, tag_b = 0;   // tag_b 0: a wall
+  std::string wall;            // a wall's mesh ID
+  // Keeps this interaction if it reaches strictly deeper (ties: the first, in task order).
+  void consider(const tri::PairForceResult &r, long tag_a, long tag_b,
+                const std::string &wall = std::string());
+};
+
 // What a source's material says about the scales of its contacts: the normal stiffness kn
 // (N/m) for each pair of types (atom type, atom type) or (atom type, wall type), the
 // characteristic velocity of the material fixes (m/s; 0 where the deck defines none) and, for
@@ -55,6 +67,7 @@ public:
   // Returns the source's slot (the same slot for the same id).
   int join(const std::string &id, SourceKind kind);
   void publish(int slot, const tri::InteractionTally &tally, IntersectingPair first);
+  void publish_deepest(int slot, const DeepestContact &deepest);
   // A particle-pair source's neighbour list: every pair of particles within reach, for the
   // approach checks (approach_speed.h). Null until published.
   void publish_particle_pairs(const LAMMPS_NS::NeighList *list) { particle_pairs_ = list; }
@@ -72,6 +85,7 @@ public:
   int sources(SourceKind kind) const;
   tri::InteractionTally local(TallySource which) const; // this rank, summed over the sources
   IntersectingPair first_intersecting(SourceKind kind) const; // lowest slot that found one
+  DeepestContact deepest() const; // over every source (ties: the lowest slot)
   const LAMMPS_NS::NeighList *particle_pairs() const { return particle_pairs_; }
   // The material hints published so far, with their sources' kinds, in slot order.
   struct PublishedMaterial {
@@ -90,6 +104,7 @@ private:
     SourceKind kind;
     tri::InteractionTally tally;
     IntersectingPair first;
+    DeepestContact deepest;
     bool has_material = false;
     MaterialHint material;
   };

@@ -248,6 +248,7 @@ tri::Body FixTriParticles::body(int i) const {
   b.epsilon = epsilon_;
   b.longest_edge = s.max_edge_length;
   b.min_edge = s.min_edge_length;
+  b.thinnest = s.thinnest_extent;
   b.state.x = Eigen::Vector3d(atom->x[i][0], atom->x[i][1], atom->x[i][2]);
   b.state.v = Eigen::Vector3d(atom->v[i][0], atom->v[i][1], atom->v[i][2]);
   b.state.omega = Eigen::Vector3d(atom->omega[i][0], atom->omega[i][1], atom->omega[i][2]);

@@ -108,6 +108,7 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
 
   const tagint *tag = atom->tag;
   tri_liggghts::IntersectingPair first;
+  tri_liggghts::DeepestContact deepest;
   engine_.clear_contributions();
   for (std::size_t k = 0; k < tasks_.size(); ++k) {
     const Task &t = tasks_[k];
@@ -117,6 +118,7 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
                                 [](double v) { return v != 0.0; });
     if (r.intersecting && !first.found())
       first = {std::min(tag[t.i], tag[t.j]), std::max(tag[t.i], tag[t.j])};
+    deepest.consider(r, std::min(tag[t.i], tag[t.j]), std::max(tag[t.i], tag[t.j]));
     if (r.contacts_after == 0)
       continue;
     // r is the force on the pair's first atom (a) and the torques on both.
@@ -129,6 +131,7 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
   engine_.apply(atom->f, atom->torque);
   tri_liggghts::ContactBoard &board = particles_->board();
   board.publish(board_slot_, engine_.tally(), first);
+  board.publish_deepest(board_slot_, deepest);
   board.publish_particle_pairs(list);
 }
 

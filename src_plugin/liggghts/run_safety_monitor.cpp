@@ -3,6 +3,8 @@
 #include "approach_speed.h"
 #include "step_tally.h"
 
+#include "penetration_depth.h"
+
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
@@ -41,6 +43,45 @@ void RunSafetyMonitor::end_of_step(const ContactBoard &board) {
   report_unresolved_contacts();
   if (!warned_)
     warn_first_penetration(board);
+  check_deep_contacts(board);
+}
+
+// A contact deeper than the depth through the intersection can resolve (past it a sunk vertex
+// may leave through the far side and the force would collapse). All ranks agree on the deepest
+// (MPI_MAXLOC), then stop together, naming it.
+void RunSafetyMonitor::check_deep_contacts(const ContactBoard &board) {
+  const DeepestContact mine_d = board.deepest();
+  struct {
+    double ratio;
+    int rank;
+  } mine{mine_d.depth_of_limit, lmp_->comm->me}, worst;
+  MPI_Allreduce(&mine, &worst, 1, MPI_DOUBLE_INT, MPI_MAXLOC, lmp_->world);
+  if (!(worst.ratio > 1.0))
+    return;
+  double info[5] = {mine_d.overlap, mine_d.layer, mine_d.limit, double(mine_d.tag_a),
+                    double(mine_d.tag_b)};
+  char wall[64] = "";
+  std::snprintf(wall, sizeof wall, "%s", mine_d.wall.c_str());
+  MPI_Bcast(info, 5, MPI_DOUBLE, worst.rank, lmp_->world);
+  MPI_Bcast(wall, sizeof wall, MPI_CHAR, worst.rank, lmp_->world);
+  char who[120];
+  if (info[4] > 0.0)
+    std::snprintf(who, sizeof who, "particles %.0f and %.0f", info[3], info[4]);
+  else
+    std::snprintf(who, sizeof who, "particle %.0f and wall mesh '%s'", info[3], wall);
+  const double depth = info[0] - info[1];
+  char msg[900];
+  std::snprintf(msg, sizeof msg,
+                "Fix tri/particles: step " BIGINT_FORMAT ": the real surfaces of %s intersect "
+                "%g m deep past their soft layers (overlap %g m = %.3g x the combined layer %g m), "
+                "deeper than the contact model resolves, %g m (%g of the thinner body's thinnest "
+                "extent): the repulsion would collapse as the surfaces pass through each other; "
+                "use a stiffer kn (a linear spring stops an impact at v sqrt(m_eff / kn)), slower "
+                "impacts, a wider epsilon (more of the contact inside the soft layer) or a smaller "
+                "dt (if one step carries the bodies that far)",
+                lmp_->update->ntimestep, who, depth, info[0], info[0] / info[1], info[1], info[2],
+                tri::kDeepContactLimitFraction);
+  lmp_->error->all(FLERR, msg);
 }
 
 // One reduction of one count per step until the first intersection of the run.

@@ -6,7 +6,10 @@
 //   intersecting surfaces, a particle moved more than epsilon against its force): the time
 //   step is too large for the soft layer, and particles would pass through each other.
 // - once a run, a WARNING at the first step whose real surfaces intersect (the soft layer is
-//   overrun: tri/stats counts them as penetrations), with the depth and a pair.
+//   overrun: tri/stats counts them as penetrations), with the depth and a pair;
+// - on every step, an error if a contact reaches deeper past its soft layers than the model
+//   resolves (penetration_depth.h: a fraction of the thinner body's thinnest extent), naming the
+//   pair (or particle and wall), the depth and the remedy.
 // It computes no contact itself: what it needs, the sources published.
 #pragma once
 
@@ -47,6 +50,7 @@ private:
   void find_unresolved_wall_contact(const ContactBoard &board);
   void report_unresolved_contacts();
   void warn_first_penetration(const ContactBoard &board);
+  void check_deep_contacts(const ContactBoard &board);
 };
 
 } // namespace tri_liggghts
