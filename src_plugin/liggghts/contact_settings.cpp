@@ -46,10 +46,9 @@ int pair_loop_threads(PairLoop loop, std::size_t num_pairs) {
 bool parse_contact_keyword(int narg, char **arg, int *i, ContactSettings &s,
                            const std::string &style, LAMMPS_NS::Error *error) {
   const std::string key = arg[*i];
-  static const char *known[] = {
-      "kernel",     "newton_iters",       "batch",      "parallel",
-      "cull",       "reduction",          "tangential", "absolute_damping",
-      "limitForce", "tangential_damping", "separation"};
+  static const char *known[] = {"kernel", "newton_iters", "batch", "parallel", "cull", "reduction",
+                                "tangential", "absolute_damping", "limitForce",
+                                "tangential_damping", "model", "separation"};
   bool is_known = false;
   for (const char *k : known)
     is_known = is_known || key == k;
@@ -130,6 +129,15 @@ bool parse_contact_keyword(int narg, char **arg, int *i, ContactSettings &s,
     c.limit_force = on_off(key, value, error, style);
   } else if (key == "tangential_damping") {
     c.tangential_damping = on_off(key, value, error, style);
+  } else if (key == "model") {
+    if (v == "hooke/stiffness")
+      s.model = tri::MaterialModel::hooke_stiffness;
+    else if (v == "hooke")
+      s.model = tri::MaterialModel::hooke;
+    else if (v == "hertz")
+      s.model = tri::MaterialModel::hertz;
+    else
+      fail(error, style, "'model' expects hooke/stiffness, hooke or hertz, got '" + v + "'");
   }
   *i += 2;
   return true;
