@@ -96,8 +96,10 @@ std::vector<StatColumn> make_columns() {
                    [](Tally &t, int) { return &t.distance.penalty_pairs; }),
       count_column("penetrations", "body pairs whose real surfaces intersect (soft layer overrun)",
                    [](Tally &t, int) { return &t.penetrations; }),
-      length_column("max_overlap", "deepest soft-layer overlap", StatReduction::max,
-                    [](Tally &t) { return &t.max_overlap; }),
+      length_column("max_overlap",
+                    "deepest overlap (of the soft layers; through the intersection once the "
+                    "real surfaces intersect)",
+                    StatReduction::max, [](Tally &t) { return &t.max_overlap; }),
       length_column("min_distance", "closest triangle-pair distance (0 when nothing was tested)",
                     StatReduction::min, [](Tally &t) { return &t.min_distance; }),
   };

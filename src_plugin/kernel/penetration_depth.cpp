@@ -267,9 +267,18 @@ double deepen_contacts(const TriangleSoA &a, const SurfaceSide &side_a, const Tr
   int nearest = -1;
   double nearest_distance = std::numeric_limits<double>::infinity();
   for (int k = 0; k < static_cast<int>(points.size()); ++k) {
-    if (!points[k].intersecting)
-      continue;
     const double dist = (points[k].point - m.point).norm();
+    if (!points[k].intersecting) {
+      // Part of the same intersection (header): a pair the reduction flipped (overlap beyond the
+      // layer), one inside the other body, or one at the level of the intersection along n.
+      const Vector3d &p = points[k].point;
+      const bool level = std::abs((p - m.point).dot(n)) <= 0.5 * m.depth + layer;
+      drop[k] = dist <= reach &&
+                (points[k].overlap > layer || level ||
+                 depth_behind_surface(p, -n, b, side_b) > 0.0 ||
+                 depth_behind_surface(p, n, a, side_a) > 0.0);
+      continue;
+    }
     if (dist < nearest_distance) {
       nearest_distance = dist;
       nearest = k;

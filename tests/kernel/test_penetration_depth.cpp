@@ -201,7 +201,7 @@ TEST(DeepContact, ParticlePairLikeWall) {
 TEST(DeepContact, UndampedBounceReturnsTheEnergy) {
   const double mass = 1e-4, kn = 1.0; // N/m, the spring_only() settings
   const double peak = 4.0 * kLayer, v0 = peak * std::sqrt(kn / mass);
-  const double contact_time = M_PI * std::sqrt(mass / kn), dt = contact_time / 4000;
+  const double contact_time = M_PI * std::sqrt(mass / kn), dt = contact_time / 1000;
   const double start = 1.1 * kLayer; // the pole's height above the plane: not yet in contact
   double z = start, v = -v0;
   double deepest = 0.0;
@@ -246,4 +246,28 @@ TEST(DeepContact, TallyAndLimit) {
   EXPECT_NEAR(t.max_depth_of_limit, 1.1, 1e-9);
   for (const char *name : {"deep_contacts", "max_overlap_layers", "max_depth_of_limit"})
     EXPECT_GT(tri::stats_column_index(name), 0) << name;
+}
+
+// A cube's corner pressed h into the top face of a slab (two particles), the line of centres
+// tilted: pushed along the face's normal by layer + h, not along the line of centres.
+TEST(DeepContact, CornerIntoFaceIsPushedAlongTheFaceNormal) {
+  const double side = 0.002, h = 3 * kLayer;
+  // The slab: [-5, 5] mm x [-5, 5] mm x [-4, 0] mm.
+  Solid slab = particle(tri_test::transformed(tri_test::box(0.01, 0.01, 0.004),
+                                        Eigen::Matrix3d::Identity(), Vector3d(-0.005, -0.005, -0.004)),
+                  1.0, Vector3d::Zero(), 1e-3);
+  slab.body.state.x = Vector3d(0, 0, -0.002);
+  // The corner at the origin of box() turned to point straight down (its diagonal along +z).
+  const Eigen::Matrix3d turn =
+      Eigen::Quaterniond::FromTwoVectors(Vector3d(1, 1, 1), Vector3d(0, 0, 1)).toRotationMatrix();
+  const Vector3d corner(0.002, 0.001, -h);
+  Solid cube = particle(tri_test::transformed(tri_test::box(side, side, side), turn, corner), 1.0,
+                        Vector3d::Zero(), 1e-4);
+  cube.body.state.x = corner + turn * Vector3d::Constant(0.5 * side);
+  const tri::PairForceResult r = interact(cube, slab);
+  EXPECT_NEAR(r.force_a.z(), kLayer + h, 1e-9 * kLayer);
+  EXPECT_NEAR(r.force_a.head<2>().norm(), 0.0, 1e-9 * kLayer);
+  // Through the corner: the torque about the cube's centre is the lever to the corner x force.
+  const Vector3d expected = (corner - cube.body.state.x).cross(r.force_a);
+  EXPECT_NEAR((r.torque_a - expected).norm(), 0.0, 1e-6 * r.force_a.norm() * side);
 }

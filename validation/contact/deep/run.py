@@ -73,7 +73,7 @@ def run(exe, work, name, variables):
     with open(os.path.join(work, name + ".screen"), "w") as out:
         r = subprocess.run(cmd, cwd=work, env=valtools.run_env(1), stdout=out,
                            stderr=subprocess.STDOUT)
-    with open(os.path.join(work, name + ".screen")) as f:
+    with open(os.path.join(work, name + ".screen"), errors="replace") as f:
         screen = f.read()
     return r.returncode, screen
 
