@@ -41,7 +41,9 @@ std::size_t InteractionScratch::bytes() const {
   return distance.bytes() + triangle_contacts.capacity() * sizeof(TriangleContact) +
          points.capacity() * sizeof(ContactPoint) +
          r.raw.capacity() * sizeof(ReductionWorkspace::Raw) +
-         (r.points.capacity() + nodes.capacity() + node_velocities.capacity()) * sizeof(Eigen::Vector3d) +
+         r.polygons.capacity() * sizeof(ContactPolygon) +
+         (r.points.capacity() + nodes.capacity() + node_velocities.capacity()) *
+             sizeof(Eigen::Vector3d) +
          ints * sizeof(int);
 }
 
