@@ -8,6 +8,7 @@ packages=(
   liggghts libliggghts-dev openmpi-bin libopenmpi-dev libeigen3-dev libvtk9-dev libqhull-dev
   cmake g++ make python3
   libgtest-dev libfcl-dev            # tests: GoogleTest, FCL as the distance oracle
+  liggghts-doc                       # tests: LIGGGHTS's tutorial decks (deck.liggghts_compat)
   clang libclang-rt-14-dev libomp-dev  # tests/fuzz: clang's libFuzzer, OpenMP for clang
   python3-matplotlib python3-vtk9    # pictures and validation plots (/usr/bin/python3)
 )

@@ -17,6 +17,6 @@ cd "$top/examples/falling"
 
 echo
 echo "ParaView: open $top/examples/hopper/post/particles.pvd"
-echo "          with the hopper mesh series $top/examples/hopper/post/hopper_*.stl"
+echo "          with its walls $top/examples/hopper/post/particles_walls.pvd"
 echo "          and $top/examples/falling/post/particles.pvd (picture: post/falling.png)"
 echo "Discharge: $top/examples/hopper/post/discharge.txt"

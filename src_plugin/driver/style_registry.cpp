@@ -10,6 +10,7 @@
 #include "fix_tri_contact_history.h"
 #include "fix_tri_nve.h"
 #include "fix_tri_particles.h"
+#include "fix_tri_template_sphere.h"
 #include "fix_tri_vtk.h"
 #include "fix_tri_wall.h"
 #include "pair_tri_gran.h"
@@ -65,6 +66,9 @@ const FixRow fix_table[] = {
     {"tri/adapt_dt", &make_fix<LAMMPS_NS::FixTriAdaptDt>},
     // Replaces LIGGGHTS's own: same behaviour for pair gran, and it also serves tri/gran.
     {"contacthistory", &make_fix<LAMMPS_NS::FixTriContactHistory>},
+    // Replaces LIGGGHTS's own: the same template, which also gives inserted particles a shape
+    // once fix tri/particles exists (fix_tri_template_sphere.h).
+    {"particletemplate/sphere", &make_fix<LAMMPS_NS::FixTriTemplateSphere>},
 };
 
 } // namespace
@@ -85,7 +89,7 @@ std::vector<StyleName> registered_styles() {
   for (const PairRow &row : pair_table)
     names.push_back({"pair", row.name});
   for (const FixRow &row : fix_table)
-    if (std::string(row.name) != "contacthistory") // internal, not a user style
+    if (std::string(row.name).rfind("tri/", 0) == 0) // not the replaced LIGGGHTS styles
       names.push_back({"fix", row.name});
   for (const ComputeRow &row : compute_table)
     names.push_back({"compute", row.name});

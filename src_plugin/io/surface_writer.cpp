@@ -22,29 +22,42 @@
 
 namespace tri {
 
-void SurfaceCells::append_particle(const TriangleSoA &world, long long id, int shape, int type_,
-                                   const double v[3], const double w[3], const double f[3]) {
+void SurfaceCells::append_particle(const TriangleSoA &world, const ParticleValues &p) {
   const int ntri = world.num_triangles();
   for (int t = 0; t < ntri; ++t) {
     for (int k = 0; k < 3; ++k) {
       const std::size_t i = 3 * static_cast<std::size_t>(t) + k;
       xyz.insert(xyz.end(), {world.x[i], world.y[i], world.z[i]});
     }
-    atom_id.push_back(id);
-    shape_id.push_back(shape);
-    type.push_back(type_);
-    velocity.insert(velocity.end(), v, v + 3);
-    omega.insert(omega.end(), w, w + 3);
-    force.insert(force.end(), f, f + 3);
+    atom_id.push_back(p.id);
+    shape_id.push_back(p.shape);
+    type.push_back(p.type);
+    velocity.insert(velocity.end(), p.velocity, p.velocity + 3);
+    omega.insert(omega.end(), p.omega, p.omega + 3);
+    force.insert(force.end(), p.force, p.force + 3);
+    torque.insert(torque.end(), p.torque, p.torque + 3);
+    orientation.insert(orientation.end(), p.orientation, p.orientation + 4);
   }
 }
 
 void SurfaceCells::clear() {
-  for (auto *d : {&xyz, &velocity, &omega, &force})
+  for (auto *d : {&xyz, &velocity, &omega, &force, &torque, &orientation})
     d->clear();
   atom_id.clear();
   shape_id.clear();
   type.clear();
+}
+
+void WallCells::append_triangle(long long id, const double corners[9], const double v[3]) {
+  xyz.insert(xyz.end(), corners, corners + 9);
+  triangle_id.push_back(id);
+  velocity.insert(velocity.end(), v, v + 3);
+}
+
+void WallCells::clear() {
+  xyz.clear();
+  triangle_id.clear();
+  velocity.clear();
 }
 
 namespace {
@@ -65,10 +78,19 @@ void make_parent_directory(const std::string &path) {
 void check_sizes(const std::string &path, const SurfaceCells &c) {
   const std::size_t n = c.atom_id.size();
   const bool ok = c.xyz.size() == 9 * n && c.shape_id.size() == n && c.type.size() == n &&
-                  c.velocity.size() == 3 * n && c.omega.size() == 3 * n && c.force.size() == 3 * n;
+                  c.velocity.size() == 3 * n && c.omega.size() == 3 * n &&
+                  c.force.size() == 3 * n && c.torque.size() == 3 * n &&
+                  c.orientation.size() == 4 * n;
   if (!ok)
     throw std::runtime_error("inconsistent SurfaceCells array sizes for '" + path + "' (" +
                              std::to_string(n) + " triangles by atom_id)");
+}
+
+void check_sizes(const std::string &path, const WallCells &c) {
+  const std::size_t n = c.triangle_id.size();
+  if (c.xyz.size() != 9 * n || c.velocity.size() != 3 * n)
+    throw std::runtime_error("inconsistent WallCells array sizes for '" + path + "' (" +
+                             std::to_string(n) + " triangles by triangle_id)");
 }
 
 // A VTK array named `name` with `ncomp` components holding `count` tuples from `data`
@@ -86,15 +108,11 @@ vtkSmartPointer<Array> make_array(const char *name, int ncomp, const std::vector
   return a;
 }
 
-// The one place that decides what a surface file contains, used both for the pieces and for
-// the declarations of the .pvtp summary, so the two cannot disagree. With schema_only the
-// arrays are created empty (the summary needs names and types, not data).
-vtkSmartPointer<vtkPolyData> to_polydata(const SurfaceCells &c, bool schema_only) {
-  const std::size_t n = schema_only ? 0 : c.atom_id.size();
+// n triangles whose corners are xyz (9 per triangle), each with its own 3 points.
+vtkSmartPointer<vtkPolyData> triangles_polydata(const std::vector<double> &xyz, std::size_t n) {
   const vtkIdType npts = static_cast<vtkIdType>(3 * n);
-
   vtkNew<vtkPoints> points;
-  points->SetData(make_array<vtkDoubleArray>("Points", 3, c.xyz, 3 * n));
+  points->SetData(make_array<vtkDoubleArray>("Points", 3, xyz, 3 * n));
 
   // Triangle t uses points 3t, 3t+1, 3t+2: offsets 0, 3, 6, ... and connectivity 0..3n-1.
   vtkNew<vtkIdTypeArray> offsets, connectivity;
@@ -110,6 +128,15 @@ vtkSmartPointer<vtkPolyData> to_polydata(const SurfaceCells &c, bool schema_only
   auto poly = vtkSmartPointer<vtkPolyData>::New();
   poly->SetPoints(points);
   poly->SetPolys(triangles);
+  return poly;
+}
+
+// The one place that decides what a surface file contains, used both for the pieces and for
+// the declarations of the .pvtp summary, so the two cannot disagree. With schema_only the
+// arrays are created empty (the summary needs names and types, not data).
+vtkSmartPointer<vtkPolyData> to_polydata(const SurfaceCells &c, bool schema_only) {
+  const std::size_t n = schema_only ? 0 : c.atom_id.size();
+  vtkSmartPointer<vtkPolyData> poly = triangles_polydata(c.xyz, n);
   vtkCellData *cd = poly->GetCellData();
   cd->AddArray(make_array<vtkLongLongArray>("id", 1, c.atom_id, n));
   cd->AddArray(make_array<vtkIntArray>("shape", 1, c.shape_id, n));
@@ -117,6 +144,17 @@ vtkSmartPointer<vtkPolyData> to_polydata(const SurfaceCells &c, bool schema_only
   cd->AddArray(make_array<vtkDoubleArray>("velocity", 3, c.velocity, n));
   cd->AddArray(make_array<vtkDoubleArray>("omega", 3, c.omega, n));
   cd->AddArray(make_array<vtkDoubleArray>("force", 3, c.force, n));
+  cd->AddArray(make_array<vtkDoubleArray>("torque", 3, c.torque, n));
+  cd->AddArray(make_array<vtkDoubleArray>("orientation", 4, c.orientation, n));
+  return poly;
+}
+
+vtkSmartPointer<vtkPolyData> to_polydata(const WallCells &c) {
+  const std::size_t n = c.triangle_id.size();
+  vtkSmartPointer<vtkPolyData> poly = triangles_polydata(c.xyz, n);
+  vtkCellData *cd = poly->GetCellData();
+  cd->AddArray(make_array<vtkLongLongArray>("id", 1, c.triangle_id, n));
+  cd->AddArray(make_array<vtkDoubleArray>("velocity", 3, c.velocity, n));
   return poly;
 }
 
@@ -190,20 +228,30 @@ void write_text_atomically(const std::string &path, const std::string &text) {
     throw std::runtime_error("cannot write '" + path + "': " + ec.message());
 }
 
-} // namespace
-
-void write_vtp(const std::string &path, const SurfaceCells &cells) {
-  check_sizes(path, cells);
+// Writes `poly` with vtkXMLPolyDataWriter: binary appended data, zlib, 64-bit headers.
+void write_polydata(const std::string &path, vtkPolyData *poly) {
   make_parent_directory(path);
   vtkNew<vtkXMLPolyDataWriter> writer;
   writer->SetFileName(path.c_str());
-  writer->SetInputData(to_polydata(cells, false));
+  writer->SetInputData(poly);
   writer->SetDataModeToAppended();
   writer->EncodeAppendedDataOff(); // raw binary, not base64: smaller and faster
   writer->SetCompressorTypeToZLib();
   writer->SetHeaderTypeToUInt64(); // block sizes beyond 4 GiB stay representable
   if (writer->Write() != 1 || writer->GetErrorCode() != 0)
     throw std::runtime_error("cannot write VTK file '" + path + "'");
+}
+
+} // namespace
+
+void write_vtp(const std::string &path, const SurfaceCells &cells) {
+  check_sizes(path, cells);
+  write_polydata(path, to_polydata(cells, false));
+}
+
+void write_wall_vtp(const std::string &path, const WallCells &cells) {
+  check_sizes(path, cells);
+  write_polydata(path, to_polydata(cells));
 }
 
 // The summary is written here as text, not by vtkXMLPPolyDataWriter: that writer derives the
@@ -245,17 +293,27 @@ void write_pvtp(const std::string &path, const std::vector<std::string> &piece_f
 }
 
 void write_pvd(const std::string &path, const std::vector<std::pair<double, std::string>> &frames) {
+  std::vector<PvdEntry> entries;
+  for (const auto &[t, file] : frames)
+    entries.push_back(PvdEntry{t, file, 0, ""});
+  write_pvd_parts(path, entries);
+}
+
+void write_pvd_parts(const std::string &path, const std::vector<PvdEntry> &entries) {
   std::string x;
   x += "<?xml version=\"1.0\"?>\n";
   x += "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"";
   x += byte_order();
   x += "\">\n  <Collection>\n";
   char time[32];
-  for (const auto &[t, file] : frames) {
-    std::snprintf(time, sizeof time, "%.17g", t);
+  for (const PvdEntry &e : entries) {
+    std::snprintf(time, sizeof time, "%.17g", e.time);
     x += "    <DataSet timestep=\"";
     x += time;
-    x += "\" group=\"\" part=\"0\" file=\"" + xml_escape(file) + "\"/>\n";
+    x += "\" group=\"\" part=\"" + std::to_string(e.part) + "\"";
+    if (!e.name.empty())
+      x += " name=\"" + xml_escape(e.name) + "\"";
+    x += " file=\"" + xml_escape(e.file) + "\"/>\n";
   }
   x += "  </Collection>\n</VTKFile>\n";
   write_text_atomically(path, x);

@@ -129,6 +129,13 @@ Shape make_shape(std::string name, TriangleMesh mesh) {
     p = to_body * (p - mp.centre_of_mass);
   shape.mesh = std::move(mesh);
   shape.soa = to_soa(shape.mesh);
+  shape.principal_axes = mp.principal_axes;
+  shape.centre_of_mass = mp.centre_of_mass;
+  Eigen::Quaterniond q(mp.principal_axes);
+  q.normalize();
+  if (q.w() < 0.0) // q and -q are the same rotation; one sign, so the dump is deterministic
+    q.coeffs() = -q.coeffs();
+  shape.input_orientation = q;
   shape.volume = mp.volume;
   shape.inertia_per_density = mp.principal_moments;
 

@@ -5,6 +5,13 @@
 // ascending order of moment (MassProperties::principal_axes, including its convention for
 // repeated moments), right-handed. world = R q * body + x for a particle at x with
 // orientation q.
+//
+// Input frame: the frame of the mesh given to make_shape (a mesh file's own coordinates after
+// `scale`; for a random rock, the generator's frame: its centre of mass at the origin and the
+// stretch axes of `aspect` along x, y, z). The Shape keeps how the two relate:
+//   input = principal_axes * body + centre_of_mass,
+// so a particle with orientation input_orientation (R = principal_axes) at x has the world
+// triangles input - centre_of_mass + x: the input mesh translated, its centre of mass at x.
 #pragma once
 
 #include "mass_properties.h"
@@ -13,6 +20,7 @@
 #include "triangle_soa.h"
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <string>
 
 namespace tri {
@@ -35,10 +43,19 @@ struct Shape {
   double mean_edge_length = 0.0; // mean over the 3 edges of every triangle, m (the mesh's
                                  // resolution against the soft layer: fix tri/particles)
   bool convex = false;          // every vertex on or behind every face plane (kConvexityTolerance)
+  // The principal axes as columns, in the input frame: the rotation from the body (principal)
+  // frame to the input frame (orthonormal, determinant +1; MassProperties::principal_axes).
+  Eigen::Matrix3d principal_axes = Eigen::Matrix3d::Identity();
+  // The centre of mass in the input frame, m: the offset the body frame was moved by.
+  Eigen::Vector3d centre_of_mass = Eigen::Vector3d::Zero();
+  // principal_axes as a unit quaternion, w >= 0 (the orientation of `orient file`).
+  Eigen::Quaterniond input_orientation = Eigen::Quaterniond::Identity();
 };
 
 // Validates the mesh (validate_mesh: throws ShapeError, message prefixed with
-// "shape '<name>': "), computes its mass properties and moves it into its principal frame.
+// "shape '<name>': "), computes its mass properties and moves it into its principal frame,
+// keeping the rotation and offset back to the input frame (principal_axes, centre_of_mass,
+// input_orientation).
 Shape make_shape(std::string name, TriangleMesh mesh);
 
 // Uniformly scales a mesh about the origin (for the `scale` keyword). Throws ShapeError if

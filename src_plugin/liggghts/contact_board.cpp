@@ -10,7 +10,7 @@ int ContactBoard::join(const std::string &id, SourceKind kind) {
       sources_[k].kind = kind;
       return static_cast<int>(k);
     }
-  sources_.push_back({id, kind, {}, {}});
+  sources_.push_back({id, kind, {}, {}, false, {}});
   return static_cast<int>(sources_.size()) - 1;
 }
 
@@ -19,6 +19,22 @@ void ContactBoard::publish(int slot, const tri::InteractionTally &tally, Interse
     throw std::out_of_range("ContactBoard::publish: no source in slot " + std::to_string(slot));
   sources_[slot].tally = tally;
   sources_[slot].first = first;
+}
+
+void ContactBoard::publish_material(int slot, const MaterialHint &hint) {
+  if (slot < 0 || slot >= static_cast<int>(sources_.size()))
+    throw std::out_of_range("ContactBoard::publish_material: no source in slot " +
+                            std::to_string(slot));
+  sources_[slot].has_material = true;
+  sources_[slot].material = hint;
+}
+
+std::vector<ContactBoard::PublishedMaterial> ContactBoard::materials() const {
+  std::vector<PublishedMaterial> out;
+  for (const Source &s : sources_)
+    if (s.has_material)
+      out.push_back({s.kind, &s.id, &s.material});
+  return out;
 }
 
 void ContactBoard::clear_tallies() {
@@ -31,6 +47,7 @@ void ContactBoard::clear_tallies() {
 void ContactBoard::clear_sources() {
   sources_.clear();
   particle_pairs_ = nullptr;
+  adaptive_dt_ = false;
 }
 
 int ContactBoard::sources(SourceKind kind) const {

@@ -5,7 +5,10 @@
 // reader sees it. Owned by fix tri/particles.
 //
 // Life cycle: a source joins at its init() (idempotent per style ID) and publishes once per
-// force evaluation (setup included). Fix tri/particles clears every tally before each force
+// force evaluation (setup included). At init it also publishes its material hint (the normal
+// stiffness of each pair of types it has contacts of), which fix tri/particles reads to size
+// `epsilon auto` and to check the time step (material_scales.h); fix tri/adapt_dt publishes
+// the range of its time step. Fix tri/particles clears every tally before each force
 // evaluation (pre_force) and the membership after each run (post_run), so a style removed
 // between runs (unfix, a new pair_style) leaves nothing behind.
 // Local to this rank: the cross-rank sums are step_tally.h's.
@@ -33,6 +36,20 @@ struct IntersectingPair {
   bool found() const { return tag_a != 0; }
 };
 
+// What a source's material says about the scales of its contacts: the normal stiffness kn
+// (N/m) for each pair of types (atom type, atom type) or (atom type, wall type), the
+// characteristic velocity of the material fixes (m/s; 0 where the deck defines none) and, for
+// a wall, its soft layer (m; < 0: the particles' epsilon).
+struct MaterialHint {
+  struct Stiffness {
+    int itype = 0, jtype = 0;
+    double kn = 0.0;
+  };
+  std::vector<Stiffness> stiffness;
+  double characteristic_velocity = 0.0;
+  double wall_epsilon = -1.0;
+};
+
 class ContactBoard {
 public:
   // Returns the source's slot (the same slot for the same id).
@@ -41,6 +58,13 @@ public:
   // A particle-pair source's neighbour list: every pair of particles within reach, for the
   // approach checks (approach_speed.h). Null until published.
   void publish_particle_pairs(const LAMMPS_NS::NeighList *list) { particle_pairs_ = list; }
+  void publish_material(int slot, const MaterialHint &hint);
+  // fix tri/adapt_dt: dt stays within [dtmin, dtmax].
+  void publish_adaptive_dt(double dtmin, double dtmax) {
+    adaptive_dt_ = true;
+    dtmin_ = dtmin;
+    dtmax_ = dtmax;
+  }
 
   void clear_tallies();
   void clear_sources();
@@ -49,6 +73,16 @@ public:
   tri::InteractionTally local(TallySource which) const; // this rank, summed over the sources
   IntersectingPair first_intersecting(SourceKind kind) const; // lowest slot that found one
   const LAMMPS_NS::NeighList *particle_pairs() const { return particle_pairs_; }
+  // The material hints published so far, with their sources' kinds, in slot order.
+  struct PublishedMaterial {
+    SourceKind kind;
+    const std::string *id;
+    const MaterialHint *hint;
+  };
+  std::vector<PublishedMaterial> materials() const;
+  bool adaptive_dt() const { return adaptive_dt_; }
+  double dtmin() const { return dtmin_; }
+  double dtmax() const { return dtmax_; }
 
 private:
   struct Source {
@@ -56,9 +90,13 @@ private:
     SourceKind kind;
     tri::InteractionTally tally;
     IntersectingPair first;
+    bool has_material = false;
+    MaterialHint material;
   };
   std::vector<Source> sources_;
   const LAMMPS_NS::NeighList *particle_pairs_ = nullptr;
+  bool adaptive_dt_ = false;
+  double dtmin_ = 0.0, dtmax_ = 0.0;
 };
 
 } // namespace tri_liggghts

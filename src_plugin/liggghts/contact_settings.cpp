@@ -48,7 +48,7 @@ bool parse_contact_keyword(int narg, char **arg, int *i, ContactSettings &s,
   const std::string key = arg[*i];
   static const char *known[] = {"kernel", "newton_iters", "batch", "parallel", "cull", "reduction",
                                 "tangential", "absolute_damping", "limitForce",
-                                "tangential_damping"};
+                                "tangential_damping", "model"};
   bool is_known = false;
   for (const char *k : known)
     is_known = is_known || key == k;
@@ -119,6 +119,15 @@ bool parse_contact_keyword(int narg, char **arg, int *i, ContactSettings &s,
     c.limit_force = on_off(key, value, error, style);
   } else if (key == "tangential_damping") {
     c.tangential_damping = on_off(key, value, error, style);
+  } else if (key == "model") {
+    if (v == "hooke/stiffness")
+      s.model = tri::MaterialModel::hooke_stiffness;
+    else if (v == "hooke")
+      s.model = tri::MaterialModel::hooke;
+    else if (v == "hertz")
+      s.model = tri::MaterialModel::hertz;
+    else
+      fail(error, style, "'model' expects hooke/stiffness, hooke or hertz, got '" + v + "'");
   }
   *i += 2;
   return true;

@@ -13,9 +13,15 @@
 //   absolute_damping on|off            as LIGGGHTS hooke/stiffness (default off)
 //   limitForce on|off                  clamp attractive normal force (default on, as the paper)
 //   tangential_damping on|off          (default on)
+//   model hooke/stiffness|hooke|hertz  where the coefficients come from (default
+//                                      hooke/stiffness: kn, kt, gamman, gammat as given;
+//                                      hooke, hertz: from youngsModulus, poissonsRatio,
+//                                      coefficientRestitution, characteristicVelocity;
+//                                      material_mapping.h)
 #pragma once
 
 #include "body_interaction.h"
+#include "material_mapping.h"
 
 #include <cstddef>
 #include <string>
@@ -31,6 +37,7 @@ enum class PairLoop { particle_pairs, inside_pair };
 struct ContactSettings {
   tri::InteractionSettings interaction; // coefficients: only the switches are set here
   PairLoop loop = PairLoop::particle_pairs;
+  tri::MaterialModel model = tri::MaterialModel::hooke_stiffness;
 };
 
 // Consumes the keywords it knows from arg[*i..narg), advancing *i; returns false at the first

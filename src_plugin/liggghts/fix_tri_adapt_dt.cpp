@@ -87,6 +87,7 @@ void FixTriAdaptDt::init() {
   particles_ = static_cast<FixTriParticles *>(modify->find_fix_style("tri/particles", 0));
   if (!particles_)
     error->all(FLERR, "Fix tri/adapt_dt requires fix tri/particles");
+  particles_->board().publish_adaptive_dt(dtmin_, dtmax_); // for the time-step check
   if (update->dt > dtmax_ || update->dt < dtmin_)
     set_dt(std::min(std::max(update->dt, dtmin_), dtmax_), "outside [dtmin, dtmax]");
 }

@@ -1,5 +1,7 @@
 #include "fix_tri_particles.h"
 
+#include "incompatible_styles.h"
+#include "particle_insertion.h"
 #include "particle_options.h"
 #include "shape_builder.h"
 
@@ -7,6 +9,7 @@
 #include "seeded_random.h"
 
 #include "peratom_restart.h"
+#include "restart_shapes.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -34,7 +37,9 @@ namespace {
 constexpr int kShape = 0, kQuat = 1, kAngmom = 5;
 // pending_ columns
 constexpr int kForce = 0, kTorque = 3, kFlag = 6;
-constexpr double kUnset = -1.0;
+constexpr double kUnset = -1.0; // shape by the assign rule once the atom has a tag
+// -2 - s: inserted by a template with shape s, initialised once the atom has a tag
+double inserted_with(int s) { return -2.0 - s; }
 
 } // namespace
 
@@ -53,10 +58,14 @@ FixTriParticles::FixTriParticles(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, n
   const tri_liggghts::ParticleOptions opt = tri_liggghts::parse_particle_options(narg, arg, 3, error);
   density_ = opt.density;
   epsilon_ = opt.epsilon;
+  epsilon_auto_ = opt.epsilon_auto;
+  check_timestep_every_ = opt.check_timestep_every;
   assign_by_type_ = opt.assign_by_type;
   assign_seed_ = opt.assign_seed;
   orient_random_ = opt.orient_random;
   orient_seed_ = opt.orient_seed;
+  orient_file_ = opt.orient_file;
+  templates_ = opt.templates;
 
   shapes_ = tri_liggghts::build_shapes(lmp, opt);
   monitor_ = std::make_unique<tri_liggghts::RunSafetyMonitor>(lmp, epsilon_);
@@ -67,7 +76,7 @@ FixTriParticles::FixTriParticles(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, n
   restart_global = 1;
   restart_peratom = 1;
   create_attribute = 1;
-  comm_forward = 4; // quaternion
+  comm_forward = 5; // shape + quaternion (the shape of atoms initialised in this pre_force)
   comm_border = 5;  // shape + quaternion
 
   grow_arrays(atom->nmax);
@@ -79,6 +88,8 @@ FixTriParticles::FixTriParticles(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, n
     initialise_atom(i);
     apply_mass_and_radius(i);
   }
+  // Templates defined before this fix get their shapes now (later ones in their constructor).
+  tri_liggghts::bind_templates(lmp, *this);
 }
 
 FixTriParticles::~FixTriParticles() {
@@ -94,22 +105,27 @@ int FixTriParticles::setmask() { return PRE_FORCE | POST_FORCE | END_OF_STEP; }
 void FixTriParticles::post_force(int) { monitor_->after_pair_forces(board_); }
 
 // After every fix tri/wall has added its forces.
-void FixTriParticles::end_of_step() { monitor_->end_of_step(board_); }
+void FixTriParticles::end_of_step() {
+  monitor_->end_of_step(board_);
+  if (check_timestep_every_ > 0 && update->ntimestep % check_timestep_every_ == 0)
+    tri_liggghts::check_timestep(lmp, board_, type_bodies(), epsilon_, false);
+}
 
 // A source removed between runs (unfix, another pair_style) leaves nothing behind; the
 // sources of the next run join again in their init().
 void FixTriParticles::post_run() { board_.clear_sources(); }
 
-void FixTriParticles::initialise_atom(int i) {
+void FixTriParticles::initialise_atom(int i, int shape) {
   const auto tag = static_cast<std::uint64_t>(atom->tag[i]);
-  int s = 0;
-  if (assign_by_type_)
-    s = atom->type[i] - 1;
-  else if (num_shapes() > 1)
-    s = tri::seeded_index(assign_seed_, tag, num_shapes());
+  int s = shape;
+  if (s < 0)
+    s = assign_by_type_    ? atom->type[i] - 1
+        : num_shapes() > 1 ? tri::seeded_index(assign_seed_, tag, num_shapes())
+                           : 0;
   state_[i][kShape] = s;
-  const Eigen::Quaterniond q =
-      orient_random_ ? tri::random_orientation(orient_seed_, tag) : Eigen::Quaterniond::Identity();
+  const Eigen::Quaterniond q = orient_random_ ? tri::random_orientation(orient_seed_, tag)
+                               : orient_file_ ? shapes_[s].input_orientation
+                                              : Eigen::Quaterniond::Identity();
   set_orientation(i, q);
   set_angular_momentum(i, Eigen::Vector3d::Zero());
   std::fill(pending_[i], pending_[i] + kPending, 0.0);
@@ -118,14 +134,24 @@ void FixTriParticles::initialise_atom(int i) {
 int FixTriParticles::initialise_unset_atoms() {
   int count = 0;
   for (int i = 0; i < atom->nlocal; ++i)
-    if (state_[i][kShape] == kUnset) {
+    if (state_[i][kShape] < 0.0) {
       if (atom->tag[i] <= 0)
         error->one(FLERR, "Fix tri/particles: an atom without an ID cannot be given a shape");
-      initialise_atom(i);
+      const double mark = state_[i][kShape];
+      initialise_atom(i, mark == kUnset ? -1 : static_cast<int>(-2.0 - mark));
       apply_mass_and_radius(i);
+      // A spin given on insertion (fix insert/* `omega`) is the particle's.
+      const Eigen::Vector3d w(atom->omega[i][0], atom->omega[i][1], atom->omega[i][2]);
+      if (w != Eigen::Vector3d::Zero())
+        set_angular_momentum(i, tri::angmom_from_omega(orientation(i), w, principal_inertia(i)));
       ++count;
     }
   return count;
+}
+
+void FixTriParticles::set_inserted_shape(int i, int shape) {
+  if (i >= 0 && i < atom->nlocal && shape >= 0 && shape < num_shapes() && state_[i][kShape] < 0.0)
+    state_[i][kShape] = inserted_with(shape);
 }
 
 void FixTriParticles::apply_mass_and_radius(int i) {
@@ -137,6 +163,8 @@ void FixTriParticles::apply_mass_and_radius(int i) {
 }
 
 void FixTriParticles::init() {
+  tri_liggghts::refuse_incompatible_styles(lmp, id);
+  tri_liggghts::check_insertion(lmp, *this);
   initialise_unset_atoms();
   for (int i = 0; i < atom->nlocal; ++i)
     apply_mass_and_radius(i);
@@ -144,7 +172,51 @@ void FixTriParticles::init() {
 
 void FixTriParticles::setup_pre_force(int) {
   monitor_->new_run();
+  if (epsilon_auto_ && !epsilon_resolved_)
+    error->all(FLERR, "Fix tri/particles: 'epsilon' is required here: 'epsilon auto' (the "
+                      "default) sizes the soft layer from the contact material, and no pair "
+                      "tri/gran or fix tri/wall published one for the particles present");
   pre_force(0);
+}
+
+// After the setup force evaluation: the time-step check sees the published neighbour list.
+void FixTriParticles::setup(int) {
+  if (check_timestep_every_ >= 0)
+    tri_liggghts::check_timestep(lmp, board_, type_bodies(), epsilon_, true);
+}
+
+tri_liggghts::TypeBodies FixTriParticles::type_bodies() const {
+  return tri_liggghts::type_bodies(lmp, shapes_, density_, assign_by_type_);
+}
+
+void FixTriParticles::resolve_epsilon() {
+  if (!epsilon_auto_ || epsilon_resolved_)
+    return;
+  const tri_liggghts::AutoEpsilon chosen =
+      tri_liggghts::choose_auto_epsilon(lmp, board_, type_bodies());
+  if (!chosen.found)
+    return;
+  epsilon_ = chosen.epsilon;
+  epsilon_resolved_ = true;
+  monitor_->set_epsilon(epsilon_);
+  tri_liggghts::check_shapes_against_epsilon(lmp, shapes_, epsilon_);
+  for (int i = 0; i < atom->nlocal; ++i)
+    if (state_[i][kShape] != kUnset)
+      apply_mass_and_radius(i);
+  if (comm->me == 0) {
+    char line[600];
+    std::snprintf(line, sizeof line,
+                  "tri/particles: epsilon auto = %g m (peak overlap v sqrt(meff / kn) of a "
+                  "head-on contact at the characteristic velocity %g m/s: %s, types %d and %d%s, "
+                  "meff %g kg, kn %g N/m, gives %g m = %g of the two soft layers)\n",
+                  epsilon_, chosen.speed, chosen.source.c_str(), chosen.itype, chosen.jtype,
+                  chosen.wall ? " (wall)" : "", chosen.meff, chosen.kn, chosen.overlap,
+                  tri::kAutoEpsilonFraction);
+    if (screen)
+      std::fputs(line, screen);
+    if (logfile)
+      std::fputs(line, logfile);
+  }
 }
 
 void FixTriParticles::pre_force(int) {
@@ -274,18 +346,18 @@ int FixTriParticles::unpack_border(int n, int first, double *buf) {
 int FixTriParticles::pack_comm(int n, int *list, double *buf, int, int *) {
   int m = 0;
   for (int k = 0; k < n; ++k) {
-    const double *q = state_[list[k]] + kQuat;
-    for (int v = 0; v < 4; ++v)
-      buf[m++] = q[v];
+    const double *s = state_[list[k]];
+    for (int v = 0; v < 5; ++v)
+      buf[m++] = s[v];
   }
-  return 4; // LIGGGHTS 3.8: values per atom, the caller multiplies
+  return 5; // LIGGGHTS 3.8: values per atom, the caller multiplies
 }
 
 void FixTriParticles::unpack_comm(int n, int first, double *buf) {
   int m = 0;
   for (int i = first; i < first + n; ++i)
-    for (int v = 0; v < 4; ++v)
-      state_[i][kQuat + v] = buf[m++];
+    for (int v = 0; v < 5; ++v)
+      state_[i][v] = buf[m++];
 }
 
 int FixTriParticles::pack_restart(int i, double *buf) {
@@ -321,31 +393,31 @@ bool FixTriParticles::take_restored_force_and_torque(int i, double *f, double *t
   return true;
 }
 
-// The shapes themselves are rebuilt from the deck; the restart file keeps a fingerprint so a
-// deck whose shapes differ from the run that wrote the restart is refused.
-double FixTriParticles::shape_fingerprint() const {
-  double f = num_shapes();
-  for (int s = 0; s < num_shapes(); ++s)
-    f += (s + 1) * (shapes_[s].volume * 1e9 + shapes_[s].soa.num_triangles());
-  return f;
-}
-
+// The shapes themselves are rebuilt from the deck; the restart file keeps what the deck must
+// repeat (restart_shapes.h), and a deck that differs is refused, naming each difference.
 void FixTriParticles::write_restart(FILE *fp) {
   if (comm->me != 0)
     return;
-  const double data[3] = {shape_fingerprint(), density_, epsilon_};
-  const int size = sizeof(data);
+  const std::vector<char> data =
+      tri_liggghts::encode(tri_liggghts::make_record(shapes_, epsilon_, density_));
+  const int size = static_cast<int>(data.size());
   fwrite(&size, sizeof(int), 1, fp);
-  fwrite(data, sizeof(double), 3, fp);
+  fwrite(data.data(), 1, data.size(), fp);
 }
 
 void FixTriParticles::restart(char *buf) {
   monitor_->skip_initial_check();
-  const double *data = reinterpret_cast<const double *>(buf);
-  const double f = shape_fingerprint();
-  if (std::fabs(data[0] - f) > 1e-9 * std::fabs(f))
-    error->all(FLERR, "Fix tri/particles: the shapes in this deck differ from those of the run "
-                      "that wrote the restart file");
+  std::string msg;
+  try {
+    const std::string d = tri_liggghts::differences(
+        tri_liggghts::decode(buf), tri_liggghts::make_record(shapes_, epsilon_, density_));
+    if (!d.empty())
+      msg = "Fix tri/particles: this deck differs from the run that wrote the restart file: " + d;
+  } catch (const std::runtime_error &e) {
+    msg = std::string("Fix tri/particles: ") + e.what();
+  }
+  if (!msg.empty())
+    error->all(FLERR, msg.c_str());
 }
 
 double FixTriParticles::max_rad(int type) {

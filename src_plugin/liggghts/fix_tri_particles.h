@@ -13,12 +13,17 @@
 //
 // The per-atom array is visible to dumps as f_ID[1..8]: shape index, quaternion w x y z
 // (body principal frame -> space), angular momentum Lx Ly Lz (space frame, kg m^2/s).
+//
+// Particles that fix insert/* inserts from particletemplate/sphere get their shape from the
+// template (particle_insertion.h, fix_tri_template_sphere.h) and arrive during a run without
+// a tag; pre_force initialises them (orientation, mass, radius) once they have one.
 #pragma once
 
 #include "fix.h"
 
 #include "body_interaction.h"
 #include "contact_board.h"
+#include "material_scales.h"
 #include "run_safety_monitor.h"
 #include "shape.h"
 #include "triangle_soa.h"
@@ -26,6 +31,8 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <memory>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -43,6 +50,7 @@ public:
   int setmask() override;
   void init() override;
   void setup_pre_force(int) override;
+  void setup(int) override;
   void pre_force(int) override;
   void post_force(int) override;
   void end_of_step() override;
@@ -84,6 +92,12 @@ public:
   // Principal moments of atom i, kg m^2, scaled with its rmass (so `set mass` stays consistent).
   Eigen::Vector3d principal_inertia(int i) const;
   double epsilon() const { return epsilon_; }
+  // `epsilon auto`: a contact style calls this at its init, after publishing its material on
+  // the board, before anything is sized from the radii (material_scales.h). Sets epsilon and
+  // the radii once; a no-op with an explicit epsilon or once resolved.
+  void resolve_epsilon();
+  // The bodies each atom type can be (its shapes), for the contact styles' materials.
+  tri_liggghts::TypeBodies type_bodies() const;
   // Where the contact styles publish, and their readers read (contact_board.h).
   tri_liggghts::ContactBoard &board() { return board_; }
   // World-frame triangles of owned and ghost atom i, as of the last pre_force.
@@ -93,22 +107,30 @@ public:
   tri::Body body(int i) const;
   // Recomputes world-frame triangles of atoms [0, n) from x and the quaternions.
   void update_world_triangles(int n);
+  // Insertion (particle_insertion.h): the rules a template's shape follows, and atom i, just
+  // inserted by a template with a shape (no tag yet), is given that shape.
+  bool assigns_by_type() const { return assign_by_type_; }
+  double density() const { return density_; }
+  const std::vector<std::pair<std::string, int>> &template_shapes() const { return templates_; }
+  void set_inserted_shape(int i, int shape);
 
 private:
   std::vector<tri::Shape> shapes_;
   std::vector<tri::TriangleSoA> world_;
   double density_ = 0.0, epsilon_ = 0.0;
-  bool assign_by_type_ = false, orient_random_ = false;
+  bool epsilon_auto_ = false, epsilon_resolved_ = false;
+  int check_timestep_every_ = 0; // -1 off, 0 at setup, N: also every N steps
+  bool assign_by_type_ = false, orient_random_ = false, orient_file_ = false;
+  std::vector<std::pair<std::string, int>> templates_; // `template ID SHAPE`, shape index
   std::uint64_t assign_seed_ = 0, orient_seed_ = 0;
   double **state_ = nullptr;
   double **pending_ = nullptr; // per atom: f(3), torque(3), flag
 
   tri_liggghts::ContactBoard board_;
   std::unique_ptr<tri_liggghts::RunSafetyMonitor> monitor_;
-  void initialise_atom(int i);
+  void initialise_atom(int i, int shape = -1); // shape < 0: by the assign rule
   int initialise_unset_atoms();
   void apply_mass_and_radius(int i);
-  double shape_fingerprint() const;
 };
 
 } // namespace LAMMPS_NS

@@ -96,21 +96,29 @@ void FixTriWall::init() {
   particles_ = static_cast<FixTriParticles *>(modify->find_fix_style("tri/particles", 0));
   if (!particles_)
     error->all(FLERR, "Fix tri/wall requires fix tri/particles (define it before the run)");
-  if (epsilon_ < 0.0)
-    epsilon_ = particles_->epsilon();
   // Material of (particle type, wall type): LIGGGHTS sizes the property tables by the
   // largest type of atoms and meshes alike.
   int ntypes = atom->ntypes;
-  for (FixMeshSurface *mesh : meshes_)
+  std::vector<int> wall_types;
+  for (FixMeshSurface *mesh : meshes_) {
     ntypes = std::max(ntypes, mesh->atomTypeWall());
-  materials_.load(lmp, ntypes, settings_.interaction.coefficients, "fix tri/wall");
+    wall_types.push_back(mesh->atomTypeWall());
+  }
+  materials_.load(lmp, ntypes, settings_.interaction.coefficients, settings_.model,
+                  particles_->type_bodies().sphere, true, "fix tri/wall");
+  board_slot_ = particles_->board().join(id, tri_liggghts::SourceKind::walls);
+  tri_liggghts::MaterialHint hint = materials_.hint(atom->ntypes, wall_types);
+  hint.wall_epsilon = epsilon_; // < 0: the particles' epsilon
+  particles_->board().publish_material(board_slot_, hint);
+  particles_->resolve_epsilon(); // `epsilon auto` without pair tri/gran: from this wall
+  if (epsilon_ < 0.0)
+    epsilon_ = particles_->epsilon();
   // The mesh neighbour list finds triangles within radius (= bounding radius + particle
   // epsilon) times LIGGGHTS's contact distance factor; widen it by the wall's layer.
   double rmin = std::numeric_limits<double>::infinity();
   for (int s = 0; s < particles_->num_shapes(); ++s)
     rmin = std::min(rmin, particles_->shape(s).bounding_radius + particles_->epsilon());
   neighbor->register_contact_dist_factor(1.0 + epsilon_ / rmin);
-  board_slot_ = particles_->board().join(id, tri_liggghts::SourceKind::walls);
 }
 
 void FixTriWall::setup(int) { compute(false); }

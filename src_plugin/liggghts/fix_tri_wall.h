@@ -5,7 +5,8 @@
 // particle's triangles and those wall triangles meet in tri::body_interaction, the same
 // kernel, reduction and force law as pair tri/gran; the wall material is the mesh's type.
 //
-//   fix ID group tri/wall mesh MESH_ID [MESH_ID ...] [epsilon E] [contact keywords]
+//   fix ID group tri/wall mesh MESH_ID [MESH_ID ...] [epsilon E] [model hooke/stiffness|hooke|hertz]
+//                         [contact keywords]
 //
 // A wall patch is a body of infinite mass moving as the mesh moves: its rigid velocity field is
 // fitted to the node velocities of the patch (tri/rigid_motion.h), exact for move/mesh's rigid

@@ -39,12 +39,20 @@ void PairTriGran::settings(int narg, char **arg) {
   }
 }
 
-void PairTriGran::init_granular() {
+void PairTriGran::init_style() {
   particles_ = static_cast<FixTriParticles *>(modify->find_fix_style("tri/particles", 0));
   if (!particles_)
     error->all(FLERR, "Pair tri/gran requires fix tri/particles (define it before the run)");
-  materials_.load(lmp, atom->ntypes, settings_.interaction.coefficients, "pair tri/gran");
-  board_slot_ = particles_->board().join("pair", tri_liggghts::SourceKind::particle_pairs);
+  materials_.load(lmp, atom->ntypes, settings_.interaction.coefficients, settings_.model,
+                  particles_->type_bodies().sphere, false, "pair tri/gran");
+  tri_liggghts::ContactBoard &board = particles_->board();
+  board_slot_ = board.join("pair", tri_liggghts::SourceKind::particle_pairs);
+  std::vector<int> types(atom->ntypes);
+  for (int t = 1; t <= atom->ntypes; ++t)
+    types[t - 1] = t;
+  board.publish_material(board_slot_, materials_.hint(atom->ntypes, types));
+  particles_->resolve_epsilon(); // before PairGran sizes the cutoffs from the radii
+  PairGran::init_style();
 }
 
 void PairTriGran::collect_tasks() {

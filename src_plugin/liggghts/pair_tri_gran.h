@@ -4,8 +4,13 @@
 // triangle pairs within the soft layers, reduces them to contact points and applies the
 // hooke/stiffness force law with friction; forces and torques go to both particles.
 //
-//   pair_style tri/gran [contact keywords, see contact_settings.h]
+//   pair_style tri/gran [model hooke/stiffness|hooke|hertz] [contact keywords, see
+//                       contact_settings.h]
 //   pair_coeff * *
+//
+// The material (material_table.h) is read in init_style, before LIGGGHTS sizes the neighbour
+// cutoffs from the particles' radii, and published on the contact board, so that fix
+// tri/particles can resolve `epsilon auto` from it first (material_scales.h).
 //
 // Built on LIGGGHTS's PairGran, so the tangential history lives in LIGGGHTS's own contact
 // history (fix contacthistory): it survives neighbour-list rebuilds, migration between ranks
@@ -40,7 +45,7 @@ class PairTriGran : public PairGran {
 public:
   explicit PairTriGran(class LAMMPS *);
   void settings(int, char **) override;
-  void init_granular() override;
+  void init_style() override;
   bool contact_match(const std::string, const std::string) override { return false; }
   int64_t hashcode() override { return 0x7472692f6772616eLL; } // "tri/gran"
   double stressStrainExponent() override { return 1.0; }

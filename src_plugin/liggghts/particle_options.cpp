@@ -110,6 +110,35 @@ ShapeSpec parse_shape(ArgReader &in) {
   return s;
 }
 
+double epsilon_value(ArgReader &in) {
+  if (in.done())
+    in.word("value after 'epsilon'");
+  const std::string s = in.peek();
+  char *end = nullptr;
+  errno = 0;
+  const double v = std::strtod(s.c_str(), &end);
+  if (s.empty() || end == s.c_str() || *end != '\0' || errno == ERANGE || !std::isfinite(v))
+    in.fail("'epsilon' expects a number (m) or 'auto', got '" + s + "'");
+  in.word("epsilon");
+  if (!(v > 0.0))
+    in.fail("'epsilon' must be > 0");
+  return v;
+}
+
+int check_timestep_value(ArgReader &in) {
+  const std::string s = in.word("'setup', 'off' or a number of steps after 'check_timestep'");
+  if (s == "setup")
+    return 0;
+  if (s == "off")
+    return -1;
+  char *end = nullptr;
+  errno = 0;
+  const long long n = std::strtoll(s.c_str(), &end, 10);
+  if (end == s.c_str() || *end != '\0' || errno == ERANGE || n <= 0 || n > 1000000000)
+    in.fail("'check_timestep' expects setup, off or a positive number of steps, got '" + s + "'");
+  return static_cast<int>(n);
+}
+
 } // namespace
 
 ParticleOptions parse_particle_options(int narg, char **arg, int first, LAMMPS_NS::Error *error) {
@@ -117,6 +146,7 @@ ParticleOptions parse_particle_options(int narg, char **arg, int first, LAMMPS_N
   ParticleOptions o;
   bool have_density = false, have_epsilon = false;
   std::set<std::string> names;
+  std::vector<std::pair<std::string, std::string>> templates; // shapes may come later
   while (!in.done()) {
     const std::string key = in.word("keyword");
     if (key == "shape") {
@@ -143,23 +173,39 @@ ParticleOptions parse_particle_options(int narg, char **arg, int first, LAMMPS_N
         in.fail("'density' must be > 0");
       have_density = true;
     } else if (key == "epsilon") {
-      o.epsilon = in.real("epsilon");
-      if (!(o.epsilon > 0.0))
-        in.fail("'epsilon' must be > 0");
+      if (in.peek() == "auto") {
+        in.word("auto");
+        o.epsilon_auto = true;
+        o.epsilon = 0.0;
+      } else {
+        o.epsilon = epsilon_value(in);
+        o.epsilon_auto = false;
+      }
       have_epsilon = true;
+    } else if (key == "check_timestep") {
+      o.check_timestep_every = check_timestep_value(in);
     } else if (key == "orient") {
-      const std::string mode = in.word("'random SEED' or 'none' after 'orient'");
-      if (mode == "none") {
+      const std::string mode = in.word("'random SEED', 'none' or 'file' after 'orient'");
+      if (mode == "none" || mode == "file") {
         o.orient_random = false;
+        o.orient_file = mode == "file";
       } else if (mode == "random") {
         const long long seed = in.integer("orient random");
         if (seed < 0)
           in.fail("'orient random' seed must be >= 0");
         o.orient_random = true;
+        o.orient_file = false;
         o.orient_seed = static_cast<std::uint64_t>(seed);
       } else {
-        in.fail("'orient' expects 'random SEED' or 'none', got '" + mode + "'");
+        in.fail("'orient' expects 'random SEED', 'none' or 'file', got '" + mode + "'");
       }
+    } else if (key == "template") {
+      const std::string id = in.word("fix particletemplate/sphere ID after 'template'");
+      const std::string shape = in.word("shape name after 'template " + id + "'");
+      for (const auto &t : templates)
+        if (t.first == id)
+          in.fail("'template " + id + "' is given twice");
+      templates.emplace_back(id, shape);
     } else {
       in.fail("unknown keyword '" + key + "'");
     }
@@ -169,7 +215,16 @@ ParticleOptions parse_particle_options(int narg, char **arg, int first, LAMMPS_N
   if (!have_density)
     in.fail("'density' is required");
   if (!have_epsilon)
-    in.fail("'epsilon' is required");
+    o.epsilon_auto = true; // resolved from the contact material (material_scales.h)
+  for (const auto &[id, shape] : templates) {
+    int index = -1;
+    for (std::size_t k = 0; k < o.shapes.size(); ++k)
+      if (o.shapes[k].name == shape)
+        index = static_cast<int>(k);
+    if (index < 0)
+      in.fail("'template " + id + " " + shape + "': no shape is named '" + shape + "'");
+    o.templates.emplace_back(id, index);
+  }
   return o;
 }
 

@@ -25,6 +25,7 @@ public:
   void skip_initial_check() { initial_checked_ = true; }
   // The next run warns again at its first intersection.
   void new_run() { warned_ = false; }
+  void set_epsilon(double epsilon) { epsilon_ = epsilon; } // `epsilon auto`, once resolved
   // After the pair forces (post_force of fix tri/particles, before the second half-kick: v is
   // still the velocity that carried the particles into this step's positions).
   void after_pair_forces(const ContactBoard &board);

@@ -92,11 +92,20 @@ std::vector<tri::Shape> build_shapes(LAMMPS_NS::LAMMPS *lmp, const ParticleOptio
                             std::to_string(shapes.size()) + " shapes)";
     lmp->error->all(FLERR, msg.c_str());
   }
-  for (const tri::Shape &s : shapes)
-    check_fits_in_box(lmp, s, options.epsilon);
-  for (const tri::Shape &s : shapes)
-    check_resolution(lmp, s, options.epsilon);
+  if (options.epsilon_auto)
+    for (const tri::Shape &s : shapes)
+      check_fits_in_box(lmp, s, 0.0);
+  else
+    check_shapes_against_epsilon(lmp, shapes, options.epsilon);
   return shapes;
+}
+
+void check_shapes_against_epsilon(LAMMPS_NS::LAMMPS *lmp, const std::vector<tri::Shape> &shapes,
+                                  double epsilon) {
+  for (const tri::Shape &s : shapes)
+    check_fits_in_box(lmp, s, epsilon);
+  for (const tri::Shape &s : shapes)
+    check_resolution(lmp, s, epsilon);
 }
 
 } // namespace tri_liggghts

@@ -16,6 +16,12 @@ class LAMMPS;
 
 namespace tri_liggghts {
 
+// With `epsilon auto` (options.epsilon 0) the checks against epsilon wait for
+// check_shapes_against_epsilon, once the value is known.
 std::vector<tri::Shape> build_shapes(LAMMPS_NS::LAMMPS *lmp, const ParticleOptions &options);
+
+// Every shape fits in the box with its soft layer, and no mesh is finer than the layer.
+void check_shapes_against_epsilon(LAMMPS_NS::LAMMPS *lmp, const std::vector<tri::Shape> &shapes,
+                                  double epsilon);
 
 } // namespace tri_liggghts

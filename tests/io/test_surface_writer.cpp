@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -42,10 +43,24 @@ tri::TriangleSoA particle(int ntri, double offset, double id) {
 }
 
 // Particle p (0-based) has id 100 + p, shape p, type p + 1, v = (p, 1, 2), w = (3, p, 4),
-// f = (5, 6, p) and p + 4 triangles.
+// f = (5, 6, p), torque (7, p, -8), orientation (0.5, -0.5, 0.5, p / 10) and p + 4 triangles.
+tri::ParticleValues values_of(int p) {
+  tri::ParticleValues v;
+  v.id = 100 + p;
+  v.shape = p;
+  v.type = p + 1;
+  const double vel[3] = {double(p), 1, 2}, w[3] = {3, double(p), 4}, f[3] = {5, 6, double(p)};
+  const double t[3] = {7, double(p), -8}, q[4] = {0.5, -0.5, 0.5, p / 10.0};
+  std::copy(vel, vel + 3, v.velocity);
+  std::copy(w, w + 3, v.omega);
+  std::copy(f, f + 3, v.force);
+  std::copy(t, t + 3, v.torque);
+  std::copy(q, q + 4, v.orientation);
+  return v;
+}
+
 void add_particle(tri::SurfaceCells &cells, int p) {
-  const double v[3] = {double(p), 1, 2}, w[3] = {3, double(p), 4}, f[3] = {5, 6, double(p)};
-  cells.append_particle(particle(p + 4, 0.5 * p, 100 + p), 100 + p, p, p + 1, v, w, f);
+  cells.append_particle(particle(p + 4, 0.5 * p, 100 + p), values_of(p));
 }
 
 vtkDataArray *cell_array(vtkPolyData *poly, const char *name) {
@@ -72,12 +87,15 @@ void expect_particles(vtkPolyData *poly, int first, int count) {
       EXPECT_EQ(cell_array(poly, "id")->GetComponent(cell, 0), 100 + p);
       EXPECT_EQ(cell_array(poly, "shape")->GetComponent(cell, 0), p);
       EXPECT_EQ(cell_array(poly, "type")->GetComponent(cell, 0), p + 1);
-      const double v[3] = {double(p), 1, 2}, w[3] = {3, double(p), 4}, f[3] = {5, 6, double(p)};
+      const tri::ParticleValues v = values_of(p);
       for (int d = 0; d < 3; ++d) {
-        EXPECT_EQ(cell_array(poly, "velocity")->GetComponent(cell, d), v[d]);
-        EXPECT_EQ(cell_array(poly, "omega")->GetComponent(cell, d), w[d]);
-        EXPECT_EQ(cell_array(poly, "force")->GetComponent(cell, d), f[d]);
+        EXPECT_EQ(cell_array(poly, "velocity")->GetComponent(cell, d), v.velocity[d]);
+        EXPECT_EQ(cell_array(poly, "omega")->GetComponent(cell, d), v.omega[d]);
+        EXPECT_EQ(cell_array(poly, "force")->GetComponent(cell, d), v.force[d]);
+        EXPECT_EQ(cell_array(poly, "torque")->GetComponent(cell, d), v.torque[d]);
       }
+      for (int d = 0; d < 4; ++d)
+        EXPECT_EQ(cell_array(poly, "orientation")->GetComponent(cell, d), v.orientation[d]);
     }
   }
   EXPECT_EQ(cell, poly->GetNumberOfCells());
@@ -97,10 +115,14 @@ TEST(SurfaceWriter, SurfaceCellsAppendAndClear) {
   EXPECT_EQ(cells.num_triangles(), 4 + 5);
   EXPECT_EQ(cells.xyz.size(), 9u * 9u);
   EXPECT_EQ(cells.force.size(), 3u * 9u);
+  EXPECT_EQ(cells.torque.size(), 3u * 9u);
+  EXPECT_EQ(cells.orientation.size(), 4u * 9u);
+  EXPECT_EQ(cells.orientation[4 * 4 + 3], 0.1); // particle 1, triangle 0: q.z = 1 / 10
   EXPECT_EQ(cells.xyz[9 * 4 + 3 * 2 + 1], 2.0); // particle 1, triangle 0, corner 2, y
   cells.clear();
   EXPECT_EQ(cells.num_triangles(), 0);
-  EXPECT_TRUE(cells.xyz.empty() && cells.velocity.empty() && cells.type.empty());
+  EXPECT_TRUE(cells.xyz.empty() && cells.velocity.empty() && cells.type.empty() &&
+              cells.torque.empty() && cells.orientation.empty());
 }
 
 TEST(SurfaceWriter, VtpRoundTripsTwoParticles) {
@@ -118,6 +140,8 @@ TEST(SurfaceWriter, VtpRoundTripsTwoParticles) {
   EXPECT_EQ(poly->GetNumberOfCells(), 4 + 5);
   EXPECT_EQ(poly->GetNumberOfPoints(), 3 * (4 + 5));
   EXPECT_EQ(cell_array(poly, "velocity")->GetNumberOfComponents(), 3);
+  EXPECT_EQ(cell_array(poly, "torque")->GetNumberOfComponents(), 3);
+  EXPECT_EQ(cell_array(poly, "orientation")->GetNumberOfComponents(), 4);
   expect_particles(poly, 0, 2);
 
   // Binary, zlib-compressed, appended (ParaView's fastest path), not ASCII or base64.
@@ -158,6 +182,8 @@ TEST(SurfaceWriter, PvtpJoinsPiecesOfTwoRanks) {
   ASSERT_EQ(reader->GetNumberOfPieces(), 2);
   vtkPolyData *poly = reader->GetOutput();
   EXPECT_EQ(poly->GetNumberOfCells(), 4 + 5 + 6);
+  EXPECT_NE(slurp(summary).find("Name=\"orientation\" NumberOfComponents=\"4\""),
+            std::string::npos);
   expect_particles(poly, 0, 3); // pieces in order: rank 0's particle 0, rank 1's 1 and 2
   std::set<double> ids;
   for (vtkIdType c = 0; c < poly->GetNumberOfCells(); ++c)
@@ -221,6 +247,96 @@ TEST(SurfaceWriter, FailuresNameThePath) {
     EXPECT_NE(std::string(e.what()).find(ok_path), std::string::npos) << e.what();
   }
   EXPECT_FALSE(fs::exists(ok_path));
+  tri::SurfaceCells no_torque;
+  add_particle(no_torque, 0);
+  no_torque.orientation.pop_back();
+  EXPECT_THROW(tri::write_vtp(ok_path, no_torque), std::runtime_error);
+  tri::WallCells wall;
+  const double corners[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0}, v[3] = {0, 0, 0};
+  wall.append_triangle(1, corners, v);
+  wall.velocity.pop_back();
+  const std::string wall_path = (dir / "wall.vtp").string();
+  try {
+    tri::write_wall_vtp(wall_path, wall);
+    ADD_FAILURE() << "no exception";
+  } catch (const std::runtime_error &e) {
+    EXPECT_NE(std::string(e.what()).find(wall_path), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(fs::exists(wall_path));
+  fs::remove_all(dir);
+}
+
+// A wall mesh: triangle t has id 10 + 3t (ids need not be contiguous), corners
+// (t, 0, 0), (t + 1, 0, 0), (t, 1, 2t) and velocity (t, -t, 0.5).
+TEST(SurfaceWriter, WallVtpRoundTrips) {
+  const fs::path dir = scratch_dir();
+  tri::WallCells wall;
+  for (int t = 0; t < 3; ++t) {
+    const double c[9] = {double(t), 0, 0, t + 1.0, 0, 0, double(t), 1, 2.0 * t};
+    const double v[3] = {double(t), -double(t), 0.5};
+    wall.append_triangle(10 + 3 * t, c, v);
+  }
+  EXPECT_EQ(wall.num_triangles(), 3);
+  const fs::path file = dir / "post" / "p_walls_cad_100.vtp";
+  tri::write_wall_vtp(file.string(), wall);
+
+  vtkNew<vtkXMLPolyDataReader> reader;
+  reader->SetFileName(file.string().c_str());
+  reader->Update();
+  vtkPolyData *poly = reader->GetOutput();
+  ASSERT_EQ(poly->GetNumberOfCells(), 3);
+  for (int t = 0; t < 3; ++t) {
+    vtkCell *c = poly->GetCell(t);
+    ASSERT_EQ(c->GetCellType(), VTK_TRIANGLE);
+    const double expected[3][3] = {{double(t), 0, 0}, {t + 1.0, 0, 0}, {double(t), 1, 2.0 * t}};
+    for (int k = 0; k < 3; ++k) {
+      double x[3];
+      poly->GetPoint(c->GetPointId(k), x);
+      for (int d = 0; d < 3; ++d)
+        EXPECT_EQ(x[d], expected[k][d]);
+    }
+    EXPECT_EQ(cell_array(poly, "id")->GetComponent(t, 0), 10 + 3 * t);
+    EXPECT_EQ(cell_array(poly, "velocity")->GetComponent(t, 0), t);
+    EXPECT_EQ(cell_array(poly, "velocity")->GetComponent(t, 1), -t);
+    EXPECT_EQ(cell_array(poly, "velocity")->GetComponent(t, 2), 0.5);
+  }
+  EXPECT_EQ(poly->GetCellData()->GetArray("shape"), nullptr); // walls carry no particle arrays
+  wall.clear();
+  EXPECT_EQ(wall.num_triangles(), 0);
+  EXPECT_TRUE(wall.xyz.empty() && wall.velocity.empty());
+  tri::write_wall_vtp((dir / "empty_wall.vtp").string(), wall); // an empty mesh is valid
+  fs::remove_all(dir);
+}
+
+TEST(SurfaceWriter, PvdPartsAndNames) {
+  const fs::path dir = scratch_dir();
+  const fs::path pvd = dir / "p_walls.pvd";
+  const std::vector<tri::PvdEntry> entries = {{0.0, "p_walls_cad_0.vtp", 0, "cad"},
+                                              {0.0, "p_walls_lid_0.vtp", 1, "lid"},
+                                              {1e-3, "p_walls_cad_100.vtp", 0, "cad"},
+                                              {1e-3, "p_walls_lid_100.vtp", 1, "lid"}};
+  tri::write_pvd_parts(pvd.string(), entries);
+  vtkNew<vtkXMLDataParser> parser;
+  parser->SetFileName(pvd.string().c_str());
+  ASSERT_EQ(parser->Parse(), 1) << "not well-formed XML";
+  vtkXMLDataElement *collection = parser->GetRootElement()->FindNestedElementWithName("Collection");
+  ASSERT_NE(collection, nullptr);
+  ASSERT_EQ(collection->GetNumberOfNestedElements(), 4);
+  for (int i = 0; i < 4; ++i) {
+    vtkXMLDataElement *e = collection->GetNestedElement(i);
+    int part = -1;
+    double t = -1.0;
+    ASSERT_TRUE(e->GetScalarAttribute("part", part));
+    ASSERT_TRUE(e->GetScalarAttribute("timestep", t));
+    EXPECT_EQ(part, entries[i].part);
+    EXPECT_EQ(t, entries[i].time);
+    EXPECT_EQ(std::string(e->GetAttribute("name")), entries[i].name);
+    EXPECT_EQ(std::string(e->GetAttribute("file")), entries[i].file);
+  }
+  // The particles' .pvd (no names) keeps one part and no name attribute.
+  tri::write_pvd(pvd.string(), {{0.0, "p_0.vtp"}});
+  EXPECT_EQ(slurp(pvd).find("name="), std::string::npos);
+  EXPECT_NE(slurp(pvd).find("part=\"0\""), std::string::npos);
   fs::remove_all(dir);
 }
 

@@ -6,6 +6,7 @@
 #include "contact_force.h"
 #include "contact_reduction.h"
 #include "particle_contacts.h"
+#include "point_triangle.h"
 
 #include <gtest/gtest.h>
 
@@ -40,32 +41,10 @@ tri::TriangleSoA soa_of(const Mesh &m) {
 
 // ---- brute-force triangle distance (separated triangles only; enough for these scenes) ----
 
-// Closest point on triangle abc to p (Ericson, Real-Time Collision Detection, 5.1.5).
+// Closest point on triangle abc to p: the kernel's (point_triangle.h, tested on its own).
 Vector3d closest_on_triangle(const Vector3d &p, const Vector3d &a, const Vector3d &b,
                              const Vector3d &c) {
-  const Vector3d ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0 && d2 <= 0)
-    return a;
-  const Vector3d bp = p - b;
-  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0 && d4 <= d3)
-    return b;
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0)
-    return a + d1 / (d1 - d3) * ab;
-  const Vector3d cp = p - c;
-  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0 && d5 <= d6)
-    return c;
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0)
-    return a + d2 / (d2 - d6) * ac;
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
-    return b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b);
-  const double denom = 1.0 / (va + vb + vc);
-  return a + ab * (vb * denom) + ac * (vc * denom);
+  return tri::closest_point_on_triangle(p, a, b, c);
 }
 
 // Closest points of segments p1q1 and p2q2 (Ericson 5.1.9).

@@ -1,9 +1,11 @@
 // make_shape: principal frame, derived numbers, convexity, error prefix; scaled().
 #include "mesh_validation.h"
+#include "random_rock.h"
 #include "shape.h"
 #include "test_meshes.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
 #include <limits>
@@ -75,6 +77,84 @@ TEST(Shape, LPrismIsNotConvex) {
   EXPECT_FALSE(s.convex);
   EXPECT_NEAR(s.volume, 3 * 0.5, 1e-12);
   EXPECT_NEAR(s.min_edge_length, 0.5, 1e-12);
+}
+
+// The rotation and offset back to the input frame (what `orient file` uses): the body mesh
+// rotated by principal_axes and moved by centre_of_mass is the input mesh, vertex for vertex.
+// The L prism's in-plane principal axes lie along the diagonals, so its principal frame is the
+// file frame turned by 45 degrees about z.
+TEST(Shape, KeepsTheRotationAndOffsetBackToTheInputFrame) {
+  const double h = 0.5;
+  const tri::TriangleMesh input = l_prism(h);
+  const tri::Shape s = tri::make_shape("ell", input);
+  const Eigen::Matrix3d &a = s.principal_axes;
+  EXPECT_NEAR((a.transpose() * a - Eigen::Matrix3d::Identity()).norm(), 0.0, 1e-14);
+  EXPECT_NEAR(a.determinant(), 1.0, 1e-14);
+  // Centroid of the L: area 2 at (1, 0.5) and area 1 at (0.5, 1.5).
+  EXPECT_NEAR((s.centre_of_mass - Eigen::Vector3d(5.0 / 6, 5.0 / 6, h / 2)).norm(), 0.0, 1e-14);
+  ASSERT_EQ(s.mesh.num_vertices(), input.num_vertices());
+  double worst = 0.0;
+  for (int v = 0; v < input.num_vertices(); ++v)
+    worst = std::max(worst, (a * s.mesh.vertices[v] + s.centre_of_mass - input.vertices[v]).norm());
+  EXPECT_LT(worst, 1e-14);
+  // Every principal axis is along z or along one of the diagonals (x +- y) / sqrt 2.
+  const Eigen::Vector3d d1 = Eigen::Vector3d(1, 1, 0).normalized(),
+                        d2 = Eigen::Vector3d(1, -1, 0).normalized(), z = Eigen::Vector3d::UnitZ();
+  for (int k = 0; k < 3; ++k) {
+    const Eigen::Vector3d axis = a.col(k);
+    const double along =
+        std::max({std::abs(axis.dot(d1)), std::abs(axis.dot(d2)), std::abs(axis.dot(z))});
+    EXPECT_NEAR(along, 1.0, 1e-12) << "axis " << k << ": " << axis.transpose();
+  }
+  // The quaternion is the same rotation, with w >= 0.
+  EXPECT_GE(s.input_orientation.w(), 0.0);
+  EXPECT_NEAR(s.input_orientation.norm(), 1.0, 1e-15);
+  EXPECT_NEAR((s.input_orientation.toRotationMatrix() - a).norm(), 0.0, 1e-14);
+}
+
+// A box under a known rigid motion: the stored rotation takes the body frame back to the input
+// frame (whatever order and signs the principal axes take), and the offset is the moved centre.
+TEST(Shape, InputFrameOfARotatedBoxIsTheMotion) {
+  const Eigen::Matrix3d r =
+      Eigen::AngleAxisd(0.9, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  const Eigen::Vector3d t(1, 2, 3);
+  const tri::TriangleMesh input = tri_test::transformed(box(0.003, 0.001, 0.002), r, t);
+  const tri::Shape s = tri::make_shape("brick", input);
+  // box() spans [0, a] x [0, b] x [0, c]: its centre moves with the motion.
+  EXPECT_NEAR((s.centre_of_mass - (r * Eigen::Vector3d(0.0015, 0.0005, 0.001) + t)).norm(), 0.0,
+              1e-14);
+  const Eigen::Matrix3d q = s.input_orientation.toRotationMatrix();
+  for (int v = 0; v < input.num_vertices(); ++v)
+    EXPECT_NEAR((q * s.mesh.vertices[v] + s.centre_of_mass - input.vertices[v]).norm(), 0.0, 1e-14);
+  // r^T principal_axes maps the box's own axes to each other: a signed permutation.
+  const Eigen::Matrix3d p = r.transpose() * s.principal_axes;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      EXPECT_NEAR(std::abs(p(i, j)) * (1.0 - std::abs(p(i, j))), 0.0, 1e-12) << p;
+}
+
+// A mesh whose axes are already principal (ascending moments along x, y, z) keeps the identity
+// rotation: `orient file` then only differs from `orient none` by nothing.
+TEST(Shape, AxisAlignedInputHasIdentityRotation) {
+  const tri::Shape s = tri::make_shape("brick", box(3, 2, 1)); // [0,3] x [0,2] x [0,1]
+  EXPECT_NEAR((s.principal_axes - Eigen::Matrix3d::Identity()).norm(), 0.0, 1e-14);
+  EXPECT_NEAR((s.centre_of_mass - Eigen::Vector3d(1.5, 1, 0.5)).norm(), 0.0, 1e-14);
+  EXPECT_NEAR(s.input_orientation.w(), 1.0, 1e-15);
+}
+
+// A random rock's input frame is the generator's: centre of mass at the origin, stretch axes of
+// `aspect` along x, y, z; for a stretched rock those are (up to sign) its principal axes.
+TEST(Shape, RandomRockInputFrameIsTheGenerators) {
+  tri::RockParameters p;
+  p.ntri = 40;
+  p.size = 0.004;
+  p.seed = 8;
+  p.aspect_middle = 0.7;
+  p.aspect_short = 0.4;
+  const tri::Shape s = tri::make_shape("rock", tri::random_rock(p));
+  EXPECT_LT(s.centre_of_mass.norm(), 1e-12 * p.size);
+  for (int k = 0; k < 3; ++k)
+    EXPECT_GT(s.principal_axes.col(k).cwiseAbs().maxCoeff(), 0.9) << s.principal_axes;
 }
 
 TEST(Shape, UnreferencedVerticesAreDropped) {

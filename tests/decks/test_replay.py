@@ -1,0 +1,124 @@
+"""One contact case replayed many ways, which must give the same trajectory bit for bit: the
+rock cluster (rock-rock and rock-wall contacts, tangential history) with 1 and 2 OpenMP
+threads over pairs and over triangles, from a restart in a new process, and on 1 and 2 MPI
+ranks together with a colliding pair across the subdomain boundary."""
+import os
+
+from decklib import check, first_frame, last_frame, make_contact_meshes, run_deck, thermo_rows
+
+CLUSTER_OUT = "cluster_{}.dump"
+
+
+def cluster_contacts(out):
+    rows = thermo_rows(out)
+    check(rows, "no thermo rows in the cluster output")
+    return max(r["stats.pairs_in_contact"] for r in rows)
+
+
+def test_threads(ctx):
+    """The cluster with 1 and 2 OpenMP threads, parallel pairs and parallel triangles: the
+    final dumps (%.17g) must be identical."""
+    make_contact_meshes(ctx.work)
+    dumps = {}
+    for loop in ("pairs", "triangles"):
+        for threads in (1, 2):
+            phase = f"{loop}_t{threads}"
+            _, out = run_deck(ctx, "in.contact_cluster",
+                              {"phase": phase, "nsteps": 2000, "pairargs": f"parallel {loop}"},
+                              env_extra={"OMP_NUM_THREADS": str(threads)})
+            check(cluster_contacts(out) > 0, f"{phase}: no contacts in the cluster")
+            step, dumps[phase] = last_frame(os.path.join(ctx.work, CLUSTER_OUT.format(phase)))
+            check(step == 2000 and len(dumps[phase]) == 8, f"{phase}: step {step}, "
+                  f"{len(dumps[phase])} atoms")
+    ref = dumps["pairs_t1"]
+    for phase, rows in dumps.items():
+        check(set(rows) == set(ref), f"{phase}: atoms {sorted(rows)}, pairs_t1 {sorted(ref)}")
+        for tag in ref:
+            check(rows[tag] == ref[tag], f"atom {tag}: {phase} differs from pairs_t1:\n "
+                  f"{rows[tag]}\n {ref[tag]}")
+
+
+def test_restart_contacts(ctx):
+    """2N steps against N + write_restart + (new process) read_restart + N, with rock-rock
+    and rock-wall contacts (tangential history) active at the restart step."""
+    make_contact_meshes(ctx.work)
+    n = 3000  # rock-rock and rock-wall contacts both active at step n (checked below)
+    run_deck(ctx, "in.contact_cluster", {"phase": "full", "nsteps": 2 * n})
+    _, out = run_deck(ctx, "in.contact_cluster_restart",
+                      {"phase": "first", "nsteps": n, "thermo_every": n})
+    run_deck(ctx, "in.contact_cluster_resume", {"phase": "second", "nsteps": n})
+    at_n = [r for r in thermo_rows(out) if r["Step"] == n]
+    check(len(at_n) == 2, f"expected two thermo rows at step {n}, got {at_n}")
+    total, pairs_only = at_n[0]["stats.pairs_in_contact"], at_n[1]["stats.pairs_in_contact"]
+    print(f"at the restart step: {total:g} contacts, {pairs_only:g} of them rock-rock")
+    check(pairs_only > 0, "no rock-rock contact at the restart step: the test would not see "
+                          "the pair history")
+    check(total - pairs_only > 0, "no rock-wall contact at the restart step")
+    step_a, full = last_frame(os.path.join(ctx.work, CLUSTER_OUT.format("full")))
+    step_b, resumed = last_frame(os.path.join(ctx.work, CLUSTER_OUT.format("second")))
+    check(step_a == step_b == 2 * n, f"last frames at steps {step_a} and {step_b}, "
+                                     f"expected {2 * n}")
+    check(len(full) == 8 and set(resumed) == set(full),
+          f"atoms {sorted(full)} without the restart, {sorted(resumed)} after it")
+    first_diff = [t for t in full if full[t] != resumed[t]]
+    check(not first_diff, f"atoms {first_diff} differ after the restart, e.g. atom "
+          f"{first_diff[:1]}:\n {full[first_diff[0]] if first_diff else ''}\n "
+          f"{resumed[first_diff[0]] if first_diff else ''}")
+
+
+def compare_columns(serial, mpi, tol, what):
+    """Largest difference per column relative to the column's largest magnitude; checks tol."""
+    worst = 0.0
+    ncol = len(next(iter(serial.values())))
+    for k in range(ncol):
+        scale = max(abs(float(r[k])) for r in serial.values())
+        for tag in serial:
+            d = abs(float(serial[tag][k]) - float(mpi[tag][k]))
+            r = d / scale if scale > 0 else d
+            worst = max(worst, r)
+            check(r <= tol, f"{what}: atom {tag} column {k + 1}: 1 rank {serial[tag][k]}, "
+                            f"2 ranks {mpi[tag][k]} (relative {r:.3g} > {tol:g})")
+    return worst
+
+
+def test_ranks_contacts(ctx):
+    """1 and 2 MPI ranks (processors 2 1 1, boundary x = 0): a colliding pair across the
+    boundary and the cluster, bitwise equal. Pair tri/gran evaluates every pair as (lower tag,
+    higher tag) whichever rank owns which atom, and each atom's pair forces are summed in the
+    order of the partners' tags (wall contacts in the order of the wall triangles), so the
+    split changes no sum and the final dumps (%.17g) must be identical. Chaotic collisions would
+    amplify any last-bit difference (the hybrid kernel's accept/fallback decision can flip on
+    one and then move a distance by up to its tolerance 1e-4 eps), so the runs are short and
+    the cluster's kernel is brute force; the comparison within 1e-10 of each column's largest
+    magnitude runs first, so a failure says how far apart the runs are."""
+    make_contact_meshes(ctx.work)
+    tol = 1e-10
+    outs = {}
+    for ranks in (1, 2):
+        phase = "serial" if ranks == 1 else "mpi"
+        run_deck(ctx, "in.contact_collide", {"px": ranks, "phase": phase}, ranks=ranks)
+        with open(os.path.join(ctx.work, f"touch_{phase}.txt")) as f:
+            touching = sum(1 for l in f if l.startswith("touch") and float(l.split()[1]) > 0)
+        check(touching > 10, f"collide, {ranks} ranks: in contact on {touching} steps only")
+        _, outs[("collide", ranks)] = last_frame(os.path.join(ctx.work, f"collide_{phase}.dump"))
+        _, out = run_deck(ctx, "in.contact_cluster",
+                          {"px": ranks, "phase": phase, "nsteps": 1500, "pairargs": "kernel bf"},
+                          ranks=ranks)
+        check(cluster_contacts(out) > 0, f"cluster, {ranks} ranks: no contacts")
+        _, outs[("cluster", ranks)] = last_frame(os.path.join(ctx.work, CLUSTER_OUT.format(phase)))
+    _, first = first_frame(os.path.join(ctx.work, "collide_serial.dump"))
+    check(float(first[1][0]) < 0 < float(first[2][0]), "the pair does not start on both ranks")
+    for what, natoms in (("collide", 2), ("cluster", 8)):
+        serial, mpi = outs[(what, 1)], outs[(what, 2)]
+        check(len(serial) == len(mpi) == natoms and set(serial) == set(mpi),
+              f"{what}: atoms were lost")
+        sides = {float(r[0]) < 0 for r in serial.values()}
+        worst = compare_columns(serial, mpi, tol, what)
+        different = [t for t in serial if serial[t] != mpi[t]]
+        verdict = f"not bitwise (atoms {different})" if different else "bitwise equal"
+        print(f"{what}: 1 vs 2 ranks {verdict}, largest relative difference {worst:.3g} "
+              f"(tolerance {tol:g}); atoms on {len(sides)} sides of x = 0 at the end")
+        check(not different, f"{what}: 1 and 2 ranks are not bitwise equal: atoms {different} "
+                             f"differ (largest relative difference {worst:.3g}), e.g. atom "
+                             f"{different[:1]}:\n {serial[different[0]] if different else ''}"
+                             f"\n {mpi[different[0]] if different else ''}")
