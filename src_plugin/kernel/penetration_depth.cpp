@@ -291,8 +291,11 @@ double deepen_contacts(const TriangleSoA &a, const SurfaceSide &side_a, const Tr
   merged.overlap = layer + m.depth;
   merged.point = m.point;
   merged.normal = n;
-  merged.patch_area = 0.0; // a point contact: the rocking damper is for faces in the layer
+  // A point contact: the rocking damper and the twist of a patch are for faces in the layers.
+  merged.patch_area = 0.0;
   merged.patch_second_moment.setZero();
+  merged.patch_mean_radius = 0.0;
+  merged.face_weight = 0.0;
   for (int k = 0; k < static_cast<int>(points.size()); ++k)
     if (drop[k]) {
       merged.num_merged += points[k].num_merged;
@@ -301,6 +304,7 @@ double deepen_contacts(const TriangleSoA &a, const SurfaceSide &side_a, const Tr
       if (points[k].normal.dot(n) >= std::cos(kDeepGroupAngle))
         merged.overlap = std::max(merged.overlap, points[k].overlap);
     }
+  merged.energy_overlap = merged.overlap; // the force is kn overlap along n: its energy's
   std::size_t w = 0;
   for (std::size_t k = 0; k < points.size(); ++k)
     if (!drop[k])

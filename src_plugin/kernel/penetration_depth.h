@@ -53,8 +53,10 @@
 // Ties: vertices within kDepthTaper x L of the deepest share the point, weights falling linearly
 // to 0 across the band (a cube face sinking flat is pushed at the face's centre, not a corner;
 // the same rule as the reduction's step 5). Coincident vertices (SoA replicates each vertex once
-// per triangle) count once. The deep contact carries no patch (no rocking damper): it is a
-// point contact of the intersection, the damper is for faces lying flat in the soft layers.
+// per triangle) count once. The deep contact carries no patch (no rocking damper, no twist
+// radius, face_weight 0; energy_overlap = overlap): it is a point contact of the intersection,
+// the patch terms are for faces lying in the soft layers (simplification: a face sunk flat past
+// the layers twists freely until it is pushed back into them).
 // Vertex-free intersections (two edges crossing, no vertex inside) keep the reduction's points.
 //
 // Surfaces. A particle is closed and outward (validated): its triangles' normals are outward.
