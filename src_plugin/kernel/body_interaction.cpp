@@ -43,6 +43,7 @@ std::size_t InteractionScratch::bytes() const {
   return distance.bytes() + triangle_contacts.capacity() * sizeof(TriangleContact) +
          points.capacity() * sizeof(ContactPoint) +
          r.raw.capacity() * sizeof(ReductionWorkspace::Raw) +
+         r.polygons.capacity() * sizeof(ContactPolygon) +
          (r.points.capacity() + nodes.capacity() + node_velocities.capacity()) *
              sizeof(Eigen::Vector3d) +
          ints * sizeof(int) + wall_apart.capacity() +

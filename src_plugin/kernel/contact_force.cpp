@@ -7,6 +7,15 @@ namespace tri {
 
 using Eigen::Vector3d;
 
+TwistPatch twist_patch_of(const ContactPoint &c) {
+  TwistPatch t;
+  if (c.patch_area > 0.0 && c.face_weight > 0.0) {
+    t.lever = c.face_weight * c.patch_mean_radius;
+    t.polar_per_area = c.face_weight * c.patch_second_moment.trace() / c.patch_area;
+  }
+  return t;
+}
+
 PairForceResult pair_contact_force(const std::vector<ContactPoint> &contacts, const BodyState &a,
                                    const BodyState &b, const ContactCoefficients &coeff, double dt,
                                    double *history) {
@@ -27,28 +36,39 @@ PairForceResult pair_contact_force(const std::vector<ContactPoint> &contacts, co
     const ContactPoint &c = contacts[i];
     const ContactKinematics k = contact_kinematics(c.point, c.normal, a, b);
     const double f_n = normal_force(coeff, c.overlap, k.v_n, m_eff);
-    Vector3d f_t = Vector3d::Zero();
+    const TwistPatch twist_patch = twist_patch_of(c);
+    const double w_n = (b.omega - a.omega).dot(c.normal);
+    Friction friction;
     switch (coeff.tangential) {
     case TangentialModel::history: {
       const bool tracked = with_history && i < kHistorySlots;
       Vector3d shear = Vector3d::Zero();
-      if (tracked && slot_of[i] >= 0)
+      double twist = 0.0;
+      if (tracked && slot_of[i] >= 0) {
         shear = slot_shear(history, slot_of[i]);
-      f_t = tangential_force_history(coeff, c.normal, k.v_t, f_n, m_eff, dt, shear);
+        twist = slot_twist(history, slot_of[i]);
+      }
+      friction =
+          friction_history(coeff, c.normal, k.v_t, w_n, f_n, m_eff, dt, twist_patch, shear, twist);
       if (tracked)
-        write_slot(next, i, c.normal, shear, c.point - origin);
+        write_slot(next, i, c.normal, shear, c.point - origin, twist);
       else
         ++r.untracked;
       break;
     }
     case TangentialModel::no_history:
-      f_t = tangential_force_no_history(coeff, k.v_t, f_n, m_eff);
+      friction = friction_no_history(coeff, k.v_t, w_n, f_n, m_eff, twist_patch);
       break;
     }
-    const Vector3d f_b = f_n * c.normal + f_t;
+    const Vector3d f_b = f_n * c.normal + friction.force;
     r.force_a -= f_b;
     r.torque_a -= (c.point - a.x).cross(f_b);
     r.torque_b += (c.point - b.x).cross(f_b);
+    if (friction.twist_torque != 0.0) {
+      const Vector3d couple_b = friction.twist_torque * c.normal;
+      r.torque_a -= couple_b;
+      r.torque_b += couple_b;
+    }
     if (c.patch_area > 0.0) {
       const Vector3d couple_b = rocking_couple(coeff, c.normal, c.patch_area,
                                                c.patch_second_moment, b.omega - a.omega, f_n,

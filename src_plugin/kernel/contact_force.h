@@ -1,12 +1,14 @@
 // Force and torques of one particle pair (or particle-wall pair) from its reduced contact
 // points: what pair tri/gran and fix tri/wall call per pair per step. Each contact point gets
-// the sub-models of contact_model.h (sign conventions there); the tangential history lives in
-// the host's per-pair array (layout and matching in contact_history.h).
+// the sub-models of contact_model.h (sign conventions there); the friction history (shear and twist)
+// lives in the host's per-pair array (layout and matching in contact_history.h).
 //
 // Per contact point p with normal n and overlap delta:
-//   kinematics at p (rotation included), F_n = normal_force(...), F_t = tangential sub-model,
-//   F_b = F_n n + F_t (on b), F_a = -F_b; torque_a += (p - x_a) x F_a, torque_b += (p - x_b) x
-//   F_b, friction included; for a face contact (patch_area > 0) also the rocking damper's
+//   kinematics at p (rotation included), F_n = normal_force(...), (F_t, T_w) = friction sub-
+//   model (friction_history or friction_no_history: sliding and, for a face-like contact,
+//   twisting, w_n = (omega_b - omega_a) . n), F_b = F_n n + F_t (on b), F_a = -F_b;
+//   torque_a += (p - x_a) x F_a - T_w n, torque_b += (p - x_b) x F_b + T_w n, friction
+//   included; for a face contact (patch_area > 0) also the rocking damper's
 //   couple C_b = rocking_couple(..., omega_b - omega_a, F_n, ...): torque_b += C_b,
 //   torque_a -= C_b (contact_model.h: a pure couple that dissipates the relative rocking a
 //   single force point cannot see). Hence F_a + F_b = 0 and total angular momentum is
@@ -41,6 +43,11 @@ struct PairForceResult {
 // `history`: kHistoryDoubles values of this pair, read and rewritten (tangential `history`
 // model); ignored and may be null for `no_history`. dt > 0 in s. With no contacts the history
 // is cleared and the result is zero.
+// The twisting-friction patch of a contact (contact_model.h TwistPatch): lever = face_weight x
+// patch_mean_radius, polar_per_area = face_weight x trace(patch_second_moment) / patch_area;
+// inactive (zero) for a point-like contact.
+TwistPatch twist_patch_of(const ContactPoint &c);
+
 PairForceResult pair_contact_force(const std::vector<ContactPoint> &contacts, const BodyState &a,
                                    const BodyState &b, const ContactCoefficients &coeff, double dt,
                                    double *history);

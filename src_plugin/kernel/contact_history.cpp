@@ -1,4 +1,4 @@
-// Matching of contact patches to tangential-history slots; the rule is in the header.
+// Matching of contact patches to friction-history slots; the rule is in the header.
 #include "contact_history.h"
 
 #include <algorithm>
@@ -7,13 +7,14 @@
 namespace tri {
 
 void write_slot(double *history, int s, const Eigen::Vector3d &normal, const Eigen::Vector3d &shear,
-                const Eigen::Vector3d &lever) {
+                const Eigen::Vector3d &lever, double twist) {
   double *h = history + s * kHistorySlotDoubles;
   for (int k = 0; k < 3; ++k) {
     h[k] = normal[k];
     h[3 + k] = shear[k];
     h[6 + k] = lever[k];
   }
+  h[9] = twist;
 }
 
 void match_history(const double *history, const ContactPoint *contacts, int n,

@@ -84,6 +84,78 @@ Vector3d rocking_couple(const ContactCoefficients &c, const Vector3d &n, double 
   return tau;
 }
 
+namespace {
+
+// Where (F, T) lies against the elliptic limit surface of half-axes f_max, t_max > 0.
+double limit_ratio(const Vector3d &f, double t, double f_max, double t_max) {
+  return std::hypot(f.norm() / f_max, t / t_max);
+}
+
+} // namespace
+
+Friction friction_history(const ContactCoefficients &c, const Vector3d &n, const Vector3d &v_t,
+                          double w_n, double f_n, double m_eff, double dt,
+                          const TwistPatch &patch, Vector3d &shear, double &twist) {
+  Friction r;
+  if (!patch.active()) {
+    twist = 0.0;
+    r.force = tangential_force_history(c, n, v_t, f_n, m_eff, dt, shear);
+    return r;
+  }
+  shear += v_t * dt;
+  shear -= shear.dot(n) * n;
+  twist += w_n * dt;
+  const double f_max = c.mu * std::abs(f_n);
+  if (!(f_max > 0.0)) {
+    shear.setZero();
+    twist = 0.0;
+    return r;
+  }
+  const double t_max = f_max * patch.lever;
+  const double k_twist = c.kt * patch.polar_per_area;
+  r.force = -c.kt * shear;
+  r.twist_torque = -k_twist * twist;
+  const double s = limit_ratio(r.force, r.twist_torque, f_max, t_max);
+  if (s > 1.0) {
+    // Slip (s > 0 implies kt > 0): both springs held on the limit surface.
+    r.force /= s;
+    r.twist_torque /= s;
+    shear = -r.force / c.kt;
+    twist = -r.twist_torque / k_twist;
+  } else if (c.tangential_damping) {
+    const double gamma = c.absolute_damping ? c.gammat : c.gammat * m_eff;
+    r.force -= gamma * v_t;
+    r.twist_torque -= gamma * patch.polar_per_area * w_n;
+    const double total = limit_ratio(r.force, r.twist_torque, f_max, t_max);
+    if (total > 1.0) {
+      r.force /= total;
+      r.twist_torque /= total;
+    }
+  }
+  return r;
+}
+
+Friction friction_no_history(const ContactCoefficients &c, const Vector3d &v_t, double w_n,
+                             double f_n, double m_eff, const TwistPatch &patch) {
+  Friction r;
+  if (!patch.active()) {
+    r.force = tangential_force_no_history(c, v_t, f_n, m_eff);
+    return r;
+  }
+  const double f_max = c.mu * std::abs(f_n);
+  if (!(f_max > 0.0))
+    return r;
+  const double gamma = c.absolute_damping ? c.gammat : c.gammat * m_eff;
+  r.force = -gamma * v_t;
+  r.twist_torque = -gamma * patch.polar_per_area * w_n;
+  const double s = limit_ratio(r.force, r.twist_torque, f_max, f_max * patch.lever);
+  if (s > 1.0) {
+    r.force /= s;
+    r.twist_torque /= s;
+  }
+  return r;
+}
+
 Vector3d tangential_force_no_history(const ContactCoefficients &c, const Vector3d &v_t, double f_n,
                                      double m_eff) {
   const double speed = v_t.norm();

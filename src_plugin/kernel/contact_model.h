@@ -30,6 +30,13 @@
 // - rocking_couple: a damping couple against the relative rotation about axes in the contact
 //   plane, for contacts with an extent (patch_area > 0). LIGGGHTS has no such term (its
 //   contacts are points).
+// - friction_history / friction_no_history: twisting friction of a face-like contact (the
+//   twist of b relative to a about n, w_n = (omega_b - omega_a) . n, resisted by the tangential
+//   spring and damper spread over the patch, capped by Coulomb friction spread over it) sharing
+//   one Coulomb budget with sliding. LIGGGHTS's spheres have none (a point does not resist
+//   twist), and neither do our vertex and edge contacts: the twist is weighted by the
+//   contact's face weight (contact_reduction.h step 6), 0 for them, so for them these are
+//   exactly tangential_force_history / tangential_force_no_history.
 #pragma once
 
 #include <Eigen/Core>
@@ -113,6 +120,57 @@ Eigen::Vector3d tangential_force_no_history(const ContactCoefficients &c,
 Eigen::Vector3d rocking_couple(const ContactCoefficients &c, const Eigen::Vector3d &n,
                                double patch_area, const Eigen::Matrix3d &patch_second_moment,
                                const Eigen::Vector3d &omega_rel, double f_n, double m_eff);
+
+// Twisting friction of a face-like contact: what the patch (contact_reduction.h step 6) gives
+// the twist sub-model, both already multiplied by the contact's face weight w in [0, 1]:
+//   lever          = w r_mean (m): with uniform pressure F_n / A on a flat region, Coulomb
+//                    friction opposing a rotation about the point resists with
+//                    integral of mu (F_n / A) |r| dA = mu F_n r_mean, r_mean = the region's mean
+//                    distance from the point: the torque limit is T_max = mu |F_n| lever;
+//   polar_per_area = w tr(J) / A (m^2): the tangential spring kt and damper gamma_t spread
+//                    uniformly over the patch (kt / A per area, as the rocking damper spreads
+//                    gamma_n) resist a twist by theta with integral of (kt / A) |r|^2 theta dA =
+//                    kt (tr J / A) theta: twist stiffness k_w = kt polar_per_area (N m/rad),
+//                    twist damping gamma_w = gamma_t polar_per_area (N m s/rad).
+// A point-like contact (w = 0) has lever = polar_per_area = 0: no twist.
+struct TwistPatch {
+  double lever = 0.0;          // m
+  double polar_per_area = 0.0; // m^2
+  bool active() const { return lever > 0.0 && polar_per_area > 0.0; }
+};
+
+struct Friction {
+  Eigen::Vector3d force = Eigen::Vector3d::Zero(); // N on b, in the tangent plane
+  double twist_torque = 0.0; // N m on b about n (on a: the opposite); the couple is twist_torque n
+};
+
+// Sliding and twisting friction of a contact with history: `shear` (m) and `twist` (rad)
+// are the contact's springs, updated in place. Without an active twist patch: twist = 0 and
+// the force is tangential_force_history's, bit for bit. With one:
+//   shear += v_t dt, projected onto the tangent plane (as tangential_force_history);
+//   twist += w_n dt;
+//   spring values F = -kt shear, T = -k_w twist;
+//   the limit surface: an ellipse in (|F|, T) with half-axes F_max = mu |F_n| (sliding) and
+//   T_max = F_max lever (twisting), s = sqrt((|F| / F_max)^2 + (T / T_max)^2);
+//   s > 1 (slip): F /= s, T /= s, shear = -F / kt, twist = -T / k_w (radial return onto the
+//   ellipse: sliding and twisting share one Coulomb budget; in steady slip the split follows the
+//   ratio of the increments, kt |v_t| / F_max against k_w |w_n| / T_max);
+//   else, with tangential_damping: F -= gamma_t v_t, T -= gamma_w w_n, and if that total is
+//   outside the ellipse (s > 1) both are scaled by 1 / s, the springs unchanged (as the damped
+//   total of tangential_force_history).
+// The simplification: the exact limit surface of a uniformly pressed flat region (Goyal,
+// Ruina and Papadopoulos 1991) is close to, not equal to, this ellipse (Howe and Cutkosky
+// 1996 fit it with one); pure sliding and pure twisting are exact.
+// F_max = 0 (no normal force or mu = 0): no friction, both springs zero.
+Friction friction_history(const ContactCoefficients &c, const Eigen::Vector3d &n,
+                          const Eigen::Vector3d &v_t, double w_n, double f_n, double m_eff,
+                          double dt, const TwistPatch &patch, Eigen::Vector3d &shear,
+                          double &twist);
+
+// The same for tangential `no_history`: F = -gamma_t v_t, T = -gamma_w w_n, scaled onto the
+// ellipse above when outside it; without an active twist patch tangential_force_no_history's.
+Friction friction_no_history(const ContactCoefficients &c, const Eigen::Vector3d &v_t, double w_n,
+                             double f_n, double m_eff, const TwistPatch &patch);
 
 // State of a rigid body at the start of the force computation. For a wall: mass <= 0 (or
 // infinite), v the wall's velocity at the contact, omega zero (x is then irrelevant).

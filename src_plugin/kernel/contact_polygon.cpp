@@ -1,6 +1,8 @@
 // Contact patch of two nearly parallel triangles; the design is in the header.
 #include "contact_polygon.h"
 
+#include "point_triangle.h"
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -11,30 +13,73 @@ namespace {
 using Eigen::Vector2d;
 using Eigen::Vector3d;
 
-// Sutherland-Hodgman on a convex polygon adds at most one vertex per half-plane, but rounding
-// can make nearly collinear vertices alternate sides; each clip at most doubles the count (a
-// vertex and a crossing per edge), so a triangle clipped by 4 half-planes never exceeds 48.
+// kPolygonMaxVertices (header): a triangle clipped by kClips half-planes.
 constexpr int kClips = 4;
 constexpr int kMaxVertices = 3 << kClips;
+static_assert(kMaxVertices == kPolygonMaxVertices, "the polygon bound of contact_polygon.h");
+
+// Lines a polygon edge can lie on: b's edges 0..2, a's edges 3..5, the layer cut 6.
+constexpr int kEdgeOfA = 3, kLayerCut = 6;
 
 struct Polygon {
   Vector2d p[kMaxVertices];
+  int line[kMaxVertices]; // the line of the edge from p[i] to p[i + 1]
   int n = 0;
 };
 
 double cross2(const Vector2d &a, const Vector2d &b) { return a.x() * b.y() - a.y() * b.x(); }
 
-// The part of `in` where the affine function with values s[i] at its vertices is >= 0.
-void clip(const Polygon &in, const double *s, Polygon &out) {
+// The part of `in` where the affine function with values s[i] at its vertices is >= 0; its
+// new edges lie on the line `label`.
+void clip(const Polygon &in, const double *s, int label, Polygon &out) {
   out.n = 0;
   for (int i = 0; i < in.n; ++i) {
     const int j = i + 1 == in.n ? 0 : i + 1;
     const bool inside_i = s[i] >= 0.0, inside_j = s[j] >= 0.0;
-    if (inside_i)
+    if (inside_i) {
+      out.line[out.n] = in.line[i];
       out.p[out.n++] = in.p[i];
-    if (inside_i != inside_j)
+    }
+    if (inside_i != inside_j) {
+      out.line[out.n] = inside_i ? label : in.line[i];
       out.p[out.n++] = in.p[i] + (s[i] / (s[i] - s[j])) * (in.p[j] - in.p[i]);
+    }
   }
+}
+
+// Closest points of the segments p0 p1 and q0 q1 (Ericson, Real-Time Collision Detection,
+// 5.1.9), degenerate segments included.
+void segment_closest(const Vector3d &p0, const Vector3d &p1, const Vector3d &q0,
+                     const Vector3d &q1, Vector3d &cp, Vector3d &cq) {
+  const Vector3d d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
+  const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
+  double s = 0.0, t = 0.0;
+  if (a <= 0.0 && e <= 0.0) {
+    cp = p0;
+    cq = q0;
+    return;
+  }
+  if (a <= 0.0) {
+    t = std::clamp(f / e, 0.0, 1.0);
+  } else {
+    const double c = d1.dot(r);
+    if (e <= 0.0) {
+      s = std::clamp(-c / a, 0.0, 1.0);
+    } else {
+      const double b = d1.dot(d2), denom = a * e - b * b;
+      s = denom > 0.0 ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
+      t = (b * s + f) / e;
+      if (t < 0.0) {
+        t = 0.0;
+        s = std::clamp(-c / a, 0.0, 1.0);
+      } else if (t > 1.0) {
+        t = 1.0;
+        s = std::clamp((b - c) / a, 0.0, 1.0);
+      }
+    }
+  }
+  cp = p0 + s * d1;
+  cq = q0 + t * d2;
 }
 
 // An affine function of the 2D coordinates: value0 + gradient . x.
@@ -81,32 +126,43 @@ bool contact_polygon(const Vector3d &a0, const Vector3d &a1, const Vector3d &a2,
   const Vector3d &o = a0;
   auto project = [&](const Vector3d &x) { return Vector2d((x - o).dot(u), (x - o).dot(v)); };
 
-  // Clip b's projection (counter-clockwise) by the three edges of a's (counter-clockwise).
+  // Clip b's projection (counter-clockwise) by the three edges of a's (counter-clockwise),
+  // keeping track of the line each polygon edge lies on (corner_points below).
+  Vector3d B[3] = {b0, b1, b2};
+  Vector3d Ao[3] = {a0, a1, a2};
   Vector2d pa[3] = {project(a0), project(a1), project(a2)};
-  if (cross2(pa[1] - pa[0], pa[2] - pa[0]) < 0.0)
+  if (cross2(pa[1] - pa[0], pa[2] - pa[0]) < 0.0) {
     std::swap(pa[1], pa[2]);
+    std::swap(Ao[1], Ao[2]);
+  }
   Polygon poly[2];
   poly[0].n = 3;
   poly[0].p[0] = project(b0);
   poly[0].p[1] = project(b1);
   poly[0].p[2] = project(b2);
-  if (cross2(poly[0].p[1] - poly[0].p[0], poly[0].p[2] - poly[0].p[0]) < 0.0)
+  if (cross2(poly[0].p[1] - poly[0].p[0], poly[0].p[2] - poly[0].p[0]) < 0.0) {
     std::swap(poly[0].p[1], poly[0].p[2]);
+    std::swap(B[1], B[2]);
+  }
+  for (int k = 0; k < 3; ++k)
+    poly[0].line[k] = k; // b's edge from B[k] to B[k + 1]
   double s[kMaxVertices];
   int cur = 0;
   for (int e = 0; e < 3 && poly[cur].n > 0; ++e) {
     const Vector2d &p = pa[e], edge = pa[e == 2 ? 0 : e + 1] - p;
     for (int i = 0; i < poly[cur].n; ++i)
       s[i] = cross2(edge, poly[cur].p[i] - p);
-    clip(poly[cur], s, poly[1 - cur]);
+    clip(poly[cur], s, kEdgeOfA + e, poly[1 - cur]); // a's edge from Ao[e] to Ao[e + 1]
     cur = 1 - cur;
   }
-  // Local overlap o = layer - (h_b - h_a), affine; keep o >= 0.
+  // Local overlap o = layer - (h_b - h_a) cos(phi / 2), affine; keep o >= 0.
   const Affine ha = plane_height(na, a0, o, u, v, m), hb = plane_height(nb, b0, o, u, v, m);
-  const Affine overlap{layer - (hb.value0 - ha.value0), -(hb.gradient - ha.gradient)};
+  const double c_half = std::abs(m.dot(na)); // cos(phi / 2), phi the angle between them
+  const Affine overlap{layer - c_half * (hb.value0 - ha.value0),
+                       -c_half * (hb.gradient - ha.gradient)};
   for (int i = 0; i < poly[cur].n; ++i)
     s[i] = overlap(poly[cur].p[i]);
-  clip(poly[cur], s, poly[1 - cur]);
+  clip(poly[cur], s, kLayerCut, poly[1 - cur]);
   const Polygon &q = poly[1 - cur];
   patch.min_triangle_area = 0.5 * std::min(la, lb);
   if (q.n < 3)
@@ -119,7 +175,7 @@ bool contact_polygon(const Vector3d &a0, const Vector3d &a1, const Vector3d &a2,
   const double o0 = std::max(0.0, overlap(p0));
   // Second moment of area about q.p[0]: integral of x x^T dA over the triangle (0, d1, d2) is
   // A/12 (d1 d1^T + d2 d2^T + (d1 + d2)(d1 + d2)^T).
-  double area = 0.0, weight = 0.0;
+  double area = 0.0, weight = 0.0, weight2 = 0.0;
   Vector2d moment = Vector2d::Zero(), area_moment = Vector2d::Zero();
   Eigen::Matrix2d second = Eigen::Matrix2d::Zero();
   for (int i = 1; i + 1 < q.n; ++i) {
@@ -129,6 +185,7 @@ bool contact_polygon(const Vector3d &a0, const Vector3d &a1, const Vector3d &a2,
     area += at;
     area_moment += at / 3.0 * (d1 + d2);
     weight += at * (o0 + o1 + o2) / 3.0;
+    weight2 += at / 6.0 * (o0 * o0 + o1 * o1 + o2 * o2 + o0 * o1 + o1 * o2 + o2 * o0);
     moment += at / 12.0 * ((o0 + o1 + o2) * (d1 + d2) + o1 * d1 + o2 * d2);
     const Vector2d d12 = d1 + d2;
     second += at / 12.0 * (d1 * d1.transpose() + d2 * d2.transpose() + d12 * d12.transpose());
@@ -137,6 +194,9 @@ bool contact_polygon(const Vector3d &a0, const Vector3d &a1, const Vector3d &a2,
     return true;
   patch.area = area;
   patch.weight = std::max(0.0, weight);
+  patch.weight2 = std::max(0.0, weight2);
+  patch.direction = m;
+  patch.overlap_gradient = overlap.gradient.x() * u + overlap.gradient.y() * v;
   const Vector2d cen = area_moment / area; // area centroid relative to p0
   const Vector2d c2 = p0 + (weight > 0.0 ? Vector2d(moment / weight) : cen);
   patch.centroid = o + c2.x() * u + c2.y() * v + 0.5 * (ha(c2) + hb(c2)) * m;
@@ -149,7 +209,120 @@ bool contact_polygon(const Vector3d &a0, const Vector3d &a1, const Vector3d &a2,
   basis.col(0) = u;
   basis.col(1) = v;
   patch.second_moment = basis * j2 * basis.transpose();
+  patch.num_vertices = q.n;
+  // Each corner lies on two lines (the edges before and after it): two of b's edges, a vertex
+  // of b; two of a's, a vertex of a; one of each, an edge crossing. Its exact closest points on
+  // the two triangles (vertex to triangle, or edge to edge) give its contact point and exact
+  // overlap, as the distance kernel's closest points do (the midpoint along m lies beside that
+  // pair's line by gap tan(phi / 2) / 2, and the affine o misses an edge pair's distance).
+  for (int i = 0; i < q.n; ++i) {
+    const Vector2d &x = q.p[i];
+    const Vector3d base = o + x.x() * u + x.y() * v;
+    patch.vertices[i] = base + 0.5 * (ha(x) + hb(x)) * m;
+    patch.corner_overlaps[i] = std::max(0.0, overlap(x));
+    patch.max_overlap = std::max(patch.max_overlap, patch.corner_overlaps[i]);
+    const int in = q.line[i == 0 ? q.n - 1 : i - 1], out = q.line[i];
+    Vector3d pa_c = patch.vertices[i], pb_c = patch.vertices[i];
+    bool exact = true;
+    if (in == kLayerCut || out == kLayerCut) {
+      exact = false; // on the layer's edge: o = 0, no weight anywhere it is used
+    } else if (in < kEdgeOfA && out < kEdgeOfA) { // b's vertex B[out] over a
+      pb_c = B[out];
+      pa_c = closest_point_on_triangle(pb_c, a0, a1, a2);
+    } else if (in >= kEdgeOfA && out >= kEdgeOfA) { // a's vertex Ao[out - 3] over b
+      pa_c = Ao[out - kEdgeOfA];
+      pb_c = closest_point_on_triangle(pa_c, b0, b1, b2);
+    } else {
+      const int eb = in < kEdgeOfA ? in : out, ea = (in < kEdgeOfA ? out : in) - kEdgeOfA;
+      segment_closest(Ao[ea], Ao[ea == 2 ? 0 : ea + 1], B[eb], B[eb == 2 ? 0 : eb + 1], pa_c,
+                      pb_c);
+    }
+    patch.corner_points[i] = 0.5 * (pa_c + pb_c);
+    patch.corner_distances[i] = exact ? (pb_c - pa_c).norm() : -1.0;
+  }
   return true;
+}
+
+ExcessIntegral excess_over(const ContactPolygon &patch, double level, const Vector3d &origin) {
+  ExcessIntegral r;
+  const int n = patch.num_vertices;
+  if (n < 3 || !(patch.max_overlap > level))
+    return r;
+  // Sutherland-Hodgman against o >= level on the corners (o is affine along the polygon).
+  Vector3d x[2 * kPolygonMaxVertices]; // one clip adds at most a vertex per edge
+  double e[2 * kPolygonMaxVertices];
+  int k = 0;
+  for (int i = 0; i < n; ++i) {
+    const int j = i + 1 == n ? 0 : i + 1;
+    const double si = patch.corner_overlaps[i] - level, sj = patch.corner_overlaps[j] - level;
+    if (si >= 0.0) {
+      x[k] = patch.vertices[i] - origin;
+      e[k++] = si;
+    }
+    if ((si >= 0.0) != (sj >= 0.0)) {
+      const double t = si / (si - sj);
+      x[k] = patch.vertices[i] - origin + t * (patch.vertices[j] - patch.vertices[i]);
+      e[k++] = 0.0;
+    }
+  }
+  if (k < 3)
+    return r;
+  // Fan from x[0]; areas measured along the polygon's direction (as its area).
+  const Vector3d &m = patch.direction;
+  for (int i = 1; i + 1 < k; ++i) {
+    const Vector3d d1 = x[i] - x[0], d2 = x[i + 1] - x[0];
+    const double at = 0.5 * d1.cross(d2).dot(m);
+    const double sum = e[0] + e[i] + e[i + 1];
+    r.weight += at * sum / 3.0;
+    r.moment += at / 12.0 * (sum * (x[0] + x[i] + x[i + 1]) + e[0] * x[0] + e[i] * x[i] +
+                             e[i + 1] * x[i + 1]);
+    // integral of e^2 over the triangle: at / 6 (sum of e_i^2 + sum of e_i e_j)
+    r.square += at / 6.0 *
+                (e[0] * e[0] + e[i] * e[i] + e[i + 1] * e[i + 1] + e[0] * e[i] + e[i] * e[i + 1] +
+                 e[i + 1] * e[0]);
+  }
+  if (r.weight < 0.0) { // the corners ran clockwise about m
+    r.weight = -r.weight;
+    r.moment = -r.moment;
+    r.square = -r.square;
+  }
+  return r;
+}
+
+DistanceIntegral polygon_distance_integral(const Vector3d *vertices, int n, const Vector3d &p,
+                                           const Vector3d &normal) {
+  DistanceIntegral r;
+  if (n < 3)
+    return r;
+  int k = 0;
+  normal.cwiseAbs().minCoeff(&k);
+  const Vector3d u = normal.cross(Vector3d::Unit(k)).normalized();
+  const Vector3d v = normal.cross(u);
+  auto project = [&](const Vector3d &x) { return Vector2d((x - p).dot(u), (x - p).dot(v)); };
+  // Antiderivative along an edge's line at distance h: (h t rho + h^3 asinh(t / h)) / 6.
+  auto primitive = [](double h, double t) {
+    return (h * t * std::sqrt(h * h + t * t) + h * h * h * std::asinh(t / h)) / 6.0;
+  };
+  double area = 0.0, distance = 0.0;
+  Vector2d a = project(vertices[n - 1]);
+  for (int i = 0; i < n; ++i) {
+    const Vector2d b = project(vertices[i]);
+    const double twice = cross2(a, b); // signed, twice the fan triangle's area
+    area += 0.5 * twice;
+    const Vector2d edge = b - a;
+    const double length = edge.norm();
+    if (length > 0.0 && twice != 0.0) {
+      const Vector2d e = edge / length;
+      const double h = std::abs(twice) / length;
+      const double ta = a.dot(e), tb = b.dot(e); // positions from the foot of the perpendicular
+      const double part = primitive(h, tb) - primitive(h, ta);
+      distance += twice > 0.0 ? part : -part;
+    }
+    a = b;
+  }
+  r.area = std::abs(area);
+  r.distance = area < 0.0 ? -distance : distance;
+  return r;
 }
 
 } // namespace tri

@@ -14,8 +14,12 @@
 // plane orthogonal to m and the projection of b is clipped against that of a (Sutherland-
 // Hodgman; a convex polygon of at most 6 vertices). Over that polygon the gap along m,
 // g(x) = h_b(x) - h_a(x) (h: height of each triangle's plane along m), is affine, and so is
-// the local overlap o(x) = layer - g(x); the polygon is clipped once more to o >= 0 (at most
-// 7 vertices). With the polygon P:
+// the local overlap o(x) = layer - g(x) cos(phi / 2), phi the angle between the triangles
+// (cos(phi / 2) = m . n_a = m . n_b): g cos(phi / 2) is the distance of a corner of either
+// triangle from the other's plane, so where the closest points are a vertex over a face the
+// largest o is the distance kernel's overlap, exactly (a vertex of an icosphere on a plane:
+// along m alone it was short by 1e-3 of the gap, and restitution lost 1.6 %); the polygon is
+// clipped once more to o >= 0 (at most 7 vertices). With the polygon P:
 //   area     = |P|                       (m^2, measured in the plane orthogonal to m)
 //   weight   = integral over P of o dA   (m^3): the load of a penalty proportional to the
 //              local overlap; for parallel faces o is uniform and weight = o * area
@@ -31,6 +35,22 @@
 //              A/12 (d1 d1^T + d2 d2^T + (d1 + d2)(d1 + d2)^T), shifted to the centroid.
 //              Geometric only (independent of the overlap o): it is what a dashpot spread
 //              uniformly over the patch needs to resist rocking (contact_reduction.h, step 6).
+//   weight2  = integral over P of o^2 dA (m^4): with weight and area, the mean square overlap,
+//              the energy of a penalty spread over the patch (contact_reduction.h step 5b)
+//   corner_overlaps, max_overlap = o at each corner and the largest (o is affine on P, so the
+//              largest overlap over P is at a corner): exact functions of the two triangles,
+//              without the distance kernel's tolerance
+//   corner_points, corner_distances = each corner's exact closest points on the two
+//              triangles, their midpoint and distance: a corner is a vertex of one triangle over
+//              the other (vertex to triangle) or the crossing of an edge of each (edge to edge),
+//              known from the lines its two polygon edges lie on; what the distance kernel gives
+//              for that feature pair, without its tolerance (contact_reduction.h step 5b)
+//   direction = m, the direction areas are measured along; overlap_gradient = the gradient
+//              of the affine o (orthogonal to m; zero for parallel triangles)
+//   vertices = the polygon's corners on the mid-surface (world frame, counter-clockwise about
+//              m), so that integrals that are not polynomial (the mean distance from a point that
+//              is known only once all the patches of a contact are summed: the twisting-friction
+//              lever of contact_reduction.h step 6) can be taken later.
 // A pair whose planes cross inside the polygon (intersecting triangles) is handled by the same
 // formula: o keeps growing past the crossing, as the reduction's overlap does.
 //
@@ -56,6 +76,10 @@ namespace tri {
 
 constexpr double kParallelFaceAngle = 0.17453292519943295; // rad, 10 degrees
 constexpr double kPatchAreaRounding = 1e-9; // patch area below this fraction: touching only
+// Sutherland-Hodgman on a convex polygon adds at most one vertex per half-plane, but rounding
+// can make nearly collinear vertices alternate sides; each clip at most doubles the count (a
+// vertex and a crossing per edge), so a triangle clipped by 4 half-planes never exceeds 48.
+constexpr int kPolygonMaxVertices = 48;
 
 struct ContactPolygon {
   double area = 0.0;   // m^2, area of the patch (projected along m)
@@ -67,6 +91,16 @@ struct ContactPolygon {
                                                            // on the mid-surface (if area > 0)
   Eigen::Matrix3d second_moment = Eigen::Matrix3d::Zero(); // m^4, integral of r r^T dA about
                                                            // area_centroid, r orthogonal to m
+  double weight2 = 0.0;     // m^4, integral of o^2 dA
+  double max_overlap = 0.0; // m, largest local overlap (at a corner)
+  Eigen::Vector3d direction = Eigen::Vector3d::UnitZ(); // unit, m (areas are measured along it)
+  Eigen::Vector3d overlap_gradient = Eigen::Vector3d::Zero(); // 1, of o along P (orthogonal to m)
+  int num_vertices = 0; // corners of the patch (0 when area is 0)
+  Eigen::Vector3d vertices[kPolygonMaxVertices]; // m, world frame, counter-clockwise about m
+  double corner_overlaps[kPolygonMaxVertices];   // m, o at each corner, >= 0
+  Eigen::Vector3d corner_points[kPolygonMaxVertices]; // m, each corner's contact point
+  double corner_distances[kPolygonMaxVertices]; // m, its exact closest-point distance; -1 on
+                                                // the layer's cut (o = 0 there)
   double polar_moment() const { return second_moment.trace(); } // m^4
 };
 
@@ -78,5 +112,35 @@ bool contact_polygon(const Eigen::Vector3d &a0, const Eigen::Vector3d &a1,
                      const Eigen::Vector3d &a2, const Eigen::Vector3d &b0,
                      const Eigen::Vector3d &b1, const Eigen::Vector3d &b2,
                      const Eigen::Vector3d &normal, double layer, ContactPolygon &patch);
+
+// The part of a patch where the local overlap exceeds `level` (m), weighted by the excess:
+// weight = integral over P of (o - level)^+ dA (m^3) and moment = integral of
+// (o - level)^+ (x - origin) dA (m^4), square = integral of ((o - level)^+)^2 dA (m^4), x on the
+// polygon's corners' plane, areas along
+// `direction`. Continuous in the geometry and in `level` (the deepest region of a face contact,
+// tapered: contact_reduction.h step 5). Zero when max_overlap <= level.
+struct ExcessIntegral {
+  double weight = 0.0;                             // m^3
+  Eigen::Vector3d moment = Eigen::Vector3d::Zero(); // m^4, about `origin`
+  double square = 0.0;                             // m^4, integral of ((o - level)^+)^2 dA
+};
+ExcessIntegral excess_over(const ContactPolygon &patch, double level,
+                           const Eigen::Vector3d &origin);
+
+// Integrals over a planar polygon `v` (n corners, in order, either orientation), projected
+// along `normal` (unit) onto the plane through `p` orthogonal to it, of 1 and of the distance
+// from p: area (m^2) and integral of |x - p| dA (m^3); their ratio is the polygon's mean
+// distance from p. Closed form per edge (a fan of signed triangles from p): for the edge's
+// line at distance h from p, with t the position along the line from the foot of the
+// perpendicular, integral over the triangle (p, t0, t1) of r dA = [h t rho + h^3 asinh(t / h)] / 6
+// from t0 to t1, rho = sqrt(h^2 + t^2); an edge through p contributes 0. Exact whether p lies
+// inside or outside the polygon.
+struct DistanceIntegral {
+  double area = 0.0;     // m^2
+  double distance = 0.0; // m^3, integral of |x - p| dA
+};
+DistanceIntegral polygon_distance_integral(const Eigen::Vector3d *v, int n,
+                                           const Eigen::Vector3d &p,
+                                           const Eigen::Vector3d &normal);
 
 } // namespace tri

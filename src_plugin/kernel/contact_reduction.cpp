@@ -3,6 +3,7 @@
 
 #include "contact_polygon.h"
 #include "point_links.h"
+#include "triangle_distance.h"
 
 #include <algorithm>
 #include <limits>
@@ -114,18 +115,64 @@ bool member_polygon(const Raw &r, const Faces &faces, double layer, ContactPolyg
   return poly.weight > 0.0 && poly.area > kPatchAreaRounding * poly.min_triangle_area;
 }
 
+// A polygon member's overlap, exact: layer minus the brute-force distance of its two triangles
+// (triangle_distance.h, exact to rounding, where the hybrid kernel is exact to its tolerance);
+// the raw overlap of an intersecting or flipped (sunk) member.
+double exact_overlap(const Raw &r, const Faces &faces, double layer) {
+  if (r.intersecting || r.overlap > layer)
+    return r.overlap;
+  const TriangleSoA &ta = *faces.a, &tb = *faces.b;
+  const Vector3d a[3] = {ta.vertex(r.tri_a, 0), ta.vertex(r.tri_a, 1), ta.vertex(r.tri_a, 2)};
+  const Vector3d b[3] = {tb.vertex(r.tri_b, 0), tb.vertex(r.tri_b, 1), tb.vertex(r.tri_b, 2)};
+  const TrianglePairDistance d = triangle_distance(a, b);
+  return d.intersecting ? r.overlap : layer - d.distance;
+}
+
+// The blend of step 5b: beta(r) = 1 - 3 r^2 + 2 r^3 for the flat-patch measure r (1 lying flat,
+// 0 from r = 1 on, C1 at both ends) and its derivative. Also the contact's face weight (step 6).
+double flat_blend(double r) {
+  if (!(r < 1.0))
+    return 0.0;
+  const double q = std::max(0.0, r);
+  return (1.0 - q) * (1.0 - q) * (1.0 + 2.0 * q);
+}
+double flat_blend_slope(double r) {
+  if (!(r < 1.0) || !(r > 0.0))
+    return 0.0;
+  return -6.0 * r * (1.0 - r);
+}
+
+// Corner i's overlap for the deepest point (step 5b): the larger of the affine one and layer
+// minus its exact closest-point distance (contact_polygon.h) for a member that is separated
+// (`layer` > 0); the affine one for an intersecting or sunk member (`layer` < 0) and on the
+// layer's cut. Never below the affine one, so a polygon whose region reaches above the level
+// has a corner above it.
+double corner_overlap(const ContactPolygon &poly, double layer, int i) {
+  if (layer > 0.0 && poly.corner_distances[i] >= 0.0)
+    return std::max(poly.corner_overlaps[i], layer - poly.corner_distances[i]);
+  return poly.corner_overlaps[i];
+}
+
+// Smoothstep 3 x^2 - 2 x^3 on [0, 1], 0 below, 1 above.
+double smoothstep(double x) {
+  if (!(x > 0.0))
+    return 0.0;
+  if (!(x < 1.0))
+    return 1.0;
+  return x * x * (3.0 - 2.0 * x);
+}
+
 ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &members,
                         const std::vector<int> &cls, const std::vector<int> &absorbed, int c,
-                        int seed, double layer, const Vector3d &ref, const Faces &faces) {
+                        int seed, double layer, const Vector3d &ref, const Faces &faces,
+                        std::vector<ContactPolygon> &polygons,
+                        std::vector<double> &polygon_exact) {
   ContactPoint p;
+  polygons.clear();
+  polygon_exact.clear();
   const Raw &s = raw[seed];
-  Vector3d sum_n = Vector3d::Zero(), sum_tied = Vector3d::Zero();
-  double sum_wn = 0.0, sum_wa = 0.0, sum_wt = 0.0;
-  // Area moments of the polygons (step 6), relative to the seed's midpoint (near the patch, so
-  // no digits are lost far from the world origin): zeroth, first, second.
-  double area0 = 0.0;
-  Vector3d area1 = Vector3d::Zero();
-  Eigen::Matrix3d area2 = Eigen::Matrix3d::Zero();
+  double deepest_plain = -std::numeric_limits<double>::infinity(); // members without a polygon
+  double D_poly = 0.0; // the polygon members' deepest overlap, exact (step 5b)
   p.min_distance = std::numeric_limits<double>::infinity();
   for (int i : members) {
     if (cls[i] != c)
@@ -138,59 +185,174 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
       continue; // rim contacts count, but neither place nor orient the contact
     ContactPolygon poly;
     if (member_polygon(r, faces, layer, poly)) {
-      sum_wa += poly.weight;
-      const Vector3d d = poly.area_centroid - s.point;
-      area0 += poly.area;
-      area1 += poly.area * d;
-      area2 += poly.second_moment + poly.area * d * d.transpose();
-    }
-    const double tied = 1.0 - (s.overlap - r.overlap) / (kDeepestTaper * layer);
-    if (tied > 0.0) {
-      sum_tied += tied * r.point;
-      sum_wt += tied;
-    }
-    if (r.overlap >= s.overlap - kNormalDepthBand * layer) {
-      sum_n += r.overlap * r.normal;
-      sum_wn += r.overlap;
-    }
-  }
-  // The deepest pair's midpoint, averaged over the pairs (nearly) tied with it (step 5).
-  const Vector3d deepest = sum_tied / sum_wt;
-  p.point = deepest;
-  p.overlap = s.overlap;
-  if (area0 > 0.0) {
-    // Step 5b: a face contact's force is the gradient of 1/2 kn o_s^2, o_s = deepest - u (1 - r)^2,
-    // smooth across flat (see the header for the derivation of the point and the factor).
-    const double mean = sum_wa / area0;
-    const double uneven = std::max(0.0, s.overlap - mean);
-    const double r = uneven / (kFlatPatchBand * s.overlap);
-    if (r < 1.0) {
-      const Vector3d area_centre = s.point + area1 / area0;
-      const double to_mean = (1.0 - r) * (1.0 - 3.0 * r);
-      const double band_term = 2.0 * kFlatPatchBand * r * r * (1.0 - r);
-      const double o_s = s.overlap - uneven * (1.0 - r) * (1.0 - r);
-      p.point = ((1.0 - to_mean - band_term) * deepest + to_mean * area_centre) / (1.0 - band_term);
-      p.overlap = o_s * (1.0 - band_term);
-    }
+      polygons.push_back(poly);
+      polygon_exact.push_back(!(r.intersecting || r.overlap > layer) ? layer : -1.0);
+      D_poly = std::max(D_poly, exact_overlap(r, faces, layer));
+    } else
+      deepest_plain = std::max(deepest_plain, r.overlap);
   }
   p.tri_a = s.tri_a;
   p.tri_b = s.tri_b;
-  const double len = sum_n.norm();
-  if (std::isfinite(len) && len > 1e-3 * sum_wn)
-    p.normal = sum_n / len;
-  else
-    p.normal = finite(s.normal) ? s.normal : ref;
-  if (sum_wa > 0.0 && area0 > 0.0) {
-    // Parallel-axis theorem from s.point to p.point (q = p.point - s.point), then onto the
-    // contact plane.
-    const Vector3d q = p.point - s.point;
-    const Eigen::Matrix3d about_point =
-        area2 - area1 * q.transpose() - q * area1.transpose() + area0 * q * q.transpose();
-    const Eigen::Matrix3d plane = Eigen::Matrix3d::Identity() - p.normal * p.normal.transpose();
-    Eigen::Matrix3d j = plane * about_point * plane;
-    p.patch_second_moment = 0.5 * (j + j.transpose());
-    p.patch_area = area0;
+  const double taper = kDeepestTaper * layer;
+
+  // The kernel's deepest overlap, point and normal over the members without a polygon (all of
+  // them when there are no polygons): step 4 and 5.
+  auto kernel_deepest = [&](double D, bool plain_only, Vector3d &point, Vector3d &normal) {
+    Vector3d sum_n = Vector3d::Zero(), sum_p = Vector3d::Zero();
+    double sum_wn = 0.0, sum_wp = 0.0;
+    for (int i : members) {
+      if (cls[i] != c || absorbed[i])
+        continue;
+      const Raw &r = raw[i];
+      if (plain_only && r.overlap > D)
+        continue; // a polygon member (deeper ones are polygon members by construction)
+      const double tied = 1.0 - (D - r.overlap) / taper;
+      if (tied > 0.0) {
+        sum_p += tied * r.point;
+        sum_wp += tied;
+      }
+      if (r.overlap >= D - kNormalDepthBand * layer) {
+        sum_n += r.overlap * r.normal;
+        sum_wn += r.overlap;
+      }
+    }
+    point = sum_wp > 0.0 ? Vector3d(sum_p / sum_wp) : s.point;
+    const double len = sum_n.norm();
+    if (std::isfinite(len) && len > 1e-3 * sum_wn)
+      normal = sum_n / len;
+    else
+      normal = finite(s.normal) ? s.normal : ref;
+  };
+
+  if (polygons.empty()) {
+    kernel_deepest(s.overlap, false, p.point, p.normal);
+    p.overlap = p.energy_overlap = s.overlap;
+    return p;
   }
+
+  // Step 5b with polygons. Their deepest overlap and its region, exact functions of the two
+  // triangles (no kernel tolerance), moments relative to the seed's midpoint (near the patch:
+  // no digits lost far from the world origin).
+  // The level of the deepest region: the taper below the deepest corner (a corner is the
+  // deepest point of its polygon; where the closest points are an edge-edge pair inside the
+  // polygons the corners may lie below the exact D).
+  double deepest_corner = 0.0;
+  for (const ContactPolygon &poly : polygons)
+    deepest_corner = std::max(deepest_corner, poly.max_overlap);
+  const double level = std::min(D_poly, deepest_corner) - taper;
+  double excess = 0.0;
+  Vector3d excess1 = Vector3d::Zero(), excess_normal = Vector3d::Zero();
+  double area = 0.0, weight = 0.0, weight2 = 0.0;
+  Vector3d area1 = Vector3d::Zero(), pressure1 = Vector3d::Zero(), area_normal = Vector3d::Zero();
+  Eigen::Matrix3d area2 = Eigen::Matrix3d::Zero();
+  for (std::size_t k = 0; k < polygons.size(); ++k) {
+    const ContactPolygon &poly = polygons[k];
+    // Each polygon's deepest region, tapered (continuous in the geometry): its weight is the
+    // excess of o over the level integrated over the polygon (mesh-independent), its point the
+    // polygon's corners above the level weighted by their excess -- the deepest corner itself
+    // when it alone is deepest (a vertex of a tilted face: exactly the point of the gradient of
+    // D), the middle of a tied edge when an edge lies flat (header, step 5b).
+    const ExcessIntegral e = excess_over(poly, level, s.point);
+    if (e.weight > 0.0) {
+      Vector3d corner_sum = Vector3d::Zero();
+      double corner_weight = 0.0;
+      for (int i = 0; i < poly.num_vertices; ++i) {
+        const double w = corner_overlap(poly, polygon_exact[k], i) - level;
+        if (w > 0.0) {
+          corner_sum += w * (poly.corner_points[i] - s.point);
+          corner_weight += w;
+        }
+      }
+      if (corner_weight > 0.0) {
+        excess += e.weight;
+        excess1 += e.weight * (corner_sum / corner_weight);
+      }
+    }
+    excess_normal += e.weight * poly.direction;
+    const Vector3d d = poly.area_centroid - s.point;
+    area += poly.area;
+    weight += poly.weight;
+    weight2 += poly.weight2;
+    area1 += poly.area * d;
+    pressure1 += poly.weight * (poly.centroid - s.point);
+    area2 += poly.second_moment + poly.area * d * d.transpose();
+    area_normal += poly.area * poly.direction;
+  }
+  // excess > 0: the deepest corner exceeds the level (its polygon has a region above it).
+  const Vector3d poly_deepest = excess > 0.0 ? Vector3d(s.point + excess1 / excess) : s.point;
+  const Vector3d poly_normal = area_normal.normalized(); // area > 0: never zero
+  const double excess_len = excess_normal.norm();
+  const Vector3d poly_deepest_normal =
+      excess_len > 0.0 ? Vector3d(excess_normal / excess_len) : poly_normal;
+  const double mean = weight / area, mean_square = weight2 / area;
+  const double r = std::max(0.0, D_poly - mean) / (kFlatPatchBand * D_poly);
+  const double beta = flat_blend(r);
+
+  // Members without a polygon (a face's own rim seen edge-on, an edge at a clear angle) take
+  // over only where they are deeper than the polygons by more than the taper: within it they
+  // are the same closest points seen through the kernel's tolerance (step 5b).
+  const double plain_share = smoothstep((deepest_plain - D_poly - taper) / taper);
+  double D = D_poly;
+  Vector3d deepest = poly_deepest, deepest_normal;
+  {
+    Vector3d kernel_point, kernel_normal;
+    kernel_deepest(s.overlap, false, kernel_point, kernel_normal);
+    // Near flat the polygons orient the deepest point; from the band's end on, the kernel's
+    // closest points (the direction of the gradient of a tilted face's overlap).
+    deepest_normal = beta * poly_deepest_normal + (1.0 - beta) * kernel_normal;
+    if (plain_share > 0.0) {
+      Vector3d plain_point, plain_normal;
+      kernel_deepest(deepest_plain, true, plain_point, plain_normal);
+      D += plain_share * (deepest_plain - D_poly);
+      deepest += plain_share * (plain_point - poly_deepest);
+      deepest_normal += plain_share * (plain_normal - deepest_normal);
+    }
+    deepest_normal.normalize();
+  }
+  p.point = deepest;
+  p.overlap = p.energy_overlap = D;
+  p.normal = deepest_normal;
+  if (beta > 0.0 && plain_share < 1.0) {
+    // Energy 1/2 kn Omega, Omega = (1 - beta) D^2 + beta Q, Q = mean square overlap: its
+    // gradient acts along the normal at the deepest point, the area centre and the centre of
+    // pressure with the weights below (header, step 5b).
+    const double b = beta * (1.0 - plain_share);
+    const double slope = flat_blend_slope(r) * (1.0 - plain_share);
+    const double q_minus = mean_square - D * D; // <= 0
+    const double a_deep =
+        2.0 * (1.0 - b) * D + q_minus * slope * (1.0 - kFlatPatchBand * r) / (kFlatPatchBand * D);
+    const double a_area = -q_minus * slope / (kFlatPatchBand * D);
+    const double a_pressure = 2.0 * b * mean;
+    const double sum = a_deep + a_area + a_pressure;
+    const Vector3d area_centre = s.point + area1 / area;
+    const Vector3d pressure_centre =
+        weight > 0.0 ? Vector3d(s.point + pressure1 / weight) : area_centre;
+    p.point = (a_deep * deepest + a_area * area_centre + a_pressure * pressure_centre) / sum;
+    p.overlap = 0.5 * sum;
+    p.energy_overlap = std::sqrt(std::max(0.0, (1.0 - b) * D * D + b * mean_square));
+    const Vector3d blended = (1.0 - b) * deepest_normal + b * poly_normal;
+    p.normal = blended.normalized();
+  }
+  p.face_weight = beta * (1.0 - plain_share);
+  // Step 6: the patch's extent about the point. Parallel-axis theorem from s.point to p.point
+  // (q = p.point - s.point), then onto the contact plane.
+  const Vector3d q = p.point - s.point;
+  const Eigen::Matrix3d about_point =
+      area2 - area1 * q.transpose() - q * area1.transpose() + area * q * q.transpose();
+  const Eigen::Matrix3d plane = Eigen::Matrix3d::Identity() - p.normal * p.normal.transpose();
+  const Eigen::Matrix3d j = plane * about_point * plane;
+  p.patch_second_moment = 0.5 * (j + j.transpose());
+  p.patch_area = area;
+  // The mean distance of the patch from the point, over the same polygons, projected onto the
+  // contact plane (numerator and denominator alike).
+  DistanceIntegral dist;
+  for (const ContactPolygon &poly : polygons) {
+    const DistanceIntegral one =
+        polygon_distance_integral(poly.vertices, poly.num_vertices, p.point, p.normal);
+    dist.area += one.area;
+    dist.distance += one.distance;
+  }
+  p.patch_mean_radius = dist.area > 0.0 ? dist.distance / dist.area : 0.0;
   return p;
 }
 
@@ -265,8 +427,10 @@ void reduce_clusters(std::vector<Raw> &raw, double layer, const ReductionParams 
       }
     }
     for (int c = first_class; c < static_cast<int>(seeds.size()); ++c)
-      if (alive[c])
-        out.push_back(make_point(raw, group, cls, absorbed, c, seeds[c], layer, ref, faces));
+      if (alive[c]) {
+        out.push_back(make_point(raw, group, cls, absorbed, c, seeds[c], layer, ref, faces,
+                                 work.polygons, work.polygon_layers));
+      }
     begin = end;
   }
   // Deepest first; ties keep component/class order (deterministic).
@@ -280,6 +444,7 @@ ContactPoint single_point(const Raw &r) {
   p.point = r.point;
   p.normal = r.normal;
   p.overlap = r.overlap;
+  p.energy_overlap = r.overlap;
   p.min_distance = r.distance;
   p.num_merged = 1;
   p.intersecting = r.intersecting;

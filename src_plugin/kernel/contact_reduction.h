@@ -36,8 +36,8 @@
 //     exactly (their separation along n_M is the patch's own gap); a second face at 90
 //     degrees or more never does.
 //  4. One ContactPoint per class: overlap = the largest member overlap (so a flat patch at
-//     uniform gap gives exactly eps_a + eps_b - gap, whatever the mesh; within the flat band
-//     of step 5b, o_s (1 - c)); point: see steps 5 and 5b;
+//     uniform gap gives exactly eps_a + eps_b - gap, whatever the mesh; with contact polygons,
+//     step 5b); point: see steps 5 and 5b;
 //     normal = the deepest member's normal, averaged (overlap-weighted) over the members tied
 //     with it to 1e-6 (eps_a + eps_b) (a flat face). The deepest pair is the pair of closest
 //     points of the two surfaces, whose direction is the contact normal of two convex bodies;
@@ -62,59 +62,98 @@
 //     validation/contact/energy: a box of 32 rocks drifted 2.5 % in 1e5 steps with the
 //     weighted centroid, 16-18 % in one bounce with a centre of pressure; 0.008 % with this rule).
 //  5b. Faces lying flat on each other. There the deepest pair is arbitrary (any point of the
-//     faces' overlap is a closest point; the kernel returns one, often a vertex): a resting
-//     cube would be pushed at a corner, tip, and rest on a point that depends on the meshing;
-//     and the energy 1/2 kn max_overlap^2 has a kink at flat (tilting either way deepens one
-//     side). So each member whose two triangles are nearly parallel (within kParallelFaceAngle
-//     = 10 degrees, contact_polygon.h) gets its contact polygon: the overlap of the two
-//     triangles projected along their mean normal, cut to where the soft layers overlap, with
-//     area, area centroid and weight = integral of the local overlap over it. The triangles of
-//     a face partition it, so the polygons of all pairs of two faces tile the faces' overlap
-//     region for ANY meshing: the patch's area A, its area centre c_A and its mean overlap
-//     m = sum(weight) / A are the faces', to rounding. With D = the deepest overlap,
-//     u = D - m (how uneven the overlap is) and r = u / (kFlatPatchBand D), the contact's
-//     energy is 1/2 kn o_s^2 with
-//       o_s = D - u (1 - r)^2  for r < 1,  o_s = D beyond:
-//     smooth across flat (o_s - m = u (2 r - r^2) is quadratic in the tilt there: no kink), equal
-//     to D once the patch is uneven by kFlatPatchBand (10 %) of D, C1 at r = 1. Relative to D,
-//     so that the band belongs to faces lying flat: the overlap of a vertex or an edge meeting a
-//     nearly parallel face is a cone or a wedge (m = D/3 or D/2, r >= 5) at every depth, and
-//     keeps its deepest pair (relative to the layer instead, their onset and end, D below the
-//     band, were softened: restitution of icospheres fell by 3 %). Differentiating (dr = (du -
-//     r kFlatPatchBand dD) / (kFlatPatchBand D)) gives
-//       d o_s = (1 - t - c) dD + t dm,  t = (1 - r)(1 - 3 r),  c = 2 kFlatPatchBand r^2 (1 - r),
-//     and since m changes with the motion as the patch's area centre c_A does and D as the
-//     deepest pair does, the force is kn o_s (1 - c) along the normal at the point
-//       ((1 - t - c) deepest pair's midpoint + t c_A) / (1 - c)
-//     (c <= 0.3 kFlatPatchBand: a 3 % correction at most). So: a face lying flat is pushed at
-//     the centre of the faces' overlap with its overlap (r = 0: m = D), whatever the meshing; a
-//     slight tilt moves the point towards the low side (a restoring torque: flat is a stable
-//     rest, with no chatter); an impacting, clearly tilted face gets the deepest pair; and every
-//     force and torque is the gradient of one energy (test FaceContactForceIsTheGradientOfItsEnergy;
-//     measured: a resting cube on a 25 deg incline, mu = 0.5, rocked at 0.8 rad/s and crept
-//     28 um with a linear, non-gradient blend; it now sticks, validation/contact/friction).
-//     Members that are not nearly parallel (vertex-face, edge-edge, edge-face, faces at a clear
-//     angle) carry no area; absorbed rim contacts neither place nor orient the point. The
-//     switch at 10 degrees: a face tilted that far is uneven by at least sin(10 deg) / 2 of its
-//     width over the overlap (or the overlap is a wedge, r >= 5), so both sides of the switch
-//     give the deepest pair and its overlap unless the face is narrower than about 1.2 layers.
-//     The baselines (paper_min_width, none) keep the kernel's midpoints: they are the paper's.
-//  6. The patch's extent, for the rocking damper of contact_force.h. The force of a contact
-//     acts at one point, so a rotation of the two bodies about that point (about an axis in
-//     the contact plane: one face rocking on the other) gives no normal velocity there and the
-//     normal dashpot does not resist it, while a real (or a pressure-like, distributed) contact
-//     of two faces is squeezed on one side and released on the other: the rocking of a face
-//     contact would be undamped (measured: a cube sliding down an incline with friction rocked
-//     at several rad/s, validation/contact/friction). So a class with polygons also carries
-//       patch_area          = sum of the members' polygon areas (m^2), and
-//       patch_second_moment = sum of their second moments of area, each moved from its own
+//     faces' overlap is a closest point; the kernel returns one, often a vertex, and its
+//     distance to within its tolerance): a resting cube would be pushed at a corner, tip, and
+//     rest on a point that depends on the meshing; and the energy 1/2 kn max_overlap^2 has a
+//     kink at flat (tilting either way deepens one side). So each member whose two triangles
+//     are nearly parallel (within kParallelFaceAngle = 10 degrees, contact_polygon.h) gets its
+//     contact polygon: the overlap of the two triangles projected along their bisector m, cut
+//     to where the soft layers overlap, on which the local overlap o is affine, with its
+//     integrals (area, of o, of o^2, first and second moments) and o at its corners. The
+//     triangles of a face partition it, so the polygons of all pairs of two faces tile the
+//     faces' overlap region for ANY meshing: its area A, area centre c_A, mean overlap
+//     m = integral of o / A, mean square Q = integral of o^2 / A and centre of pressure c_P are
+//     the faces', to rounding, and they are exact functions of the triangles: no distance-kernel
+//     tolerance enters. That matters: the hybrid kernel is exact to 1e-4 epsilon (1e-8 m here),
+//     which is 1 % of the overlap of a light cube at rest (kn 2000, 4 mm, 0.8 um), and its
+//     closest points of parallel triangles jump: measured with the previous rule (deepest pair
+//     from the kernel), a 12-triangle cube at rest on a 2-triangle plane rocked at 1e-4 rad/s
+//     (1e-13 with the brute-force kernel), on 5 to 15 degree inclines at 1e-3 to 1e-2 rad/s.
+//     With polygons:
+//       D   = the largest corner overlap over the polygons (exact; the deepest overlap);
+//       p_D = the deepest region: each polygon's part within kDeepestTaper of the layer of D,
+//             weighted by o - (D - taper) (continuous in the geometry, smoothing the tie of an
+//             edge lying flat, step 5), its centroid moved along the polygon's overlap gradient
+//             onto the polygon's own deepest level (a tilted face's deepest point is then ON its
+//             low edge, not a taper's width inside it: 1e-4 instead of 1.5e-3 work error in
+//             FaceContactForceIsTheGradientOfItsEnergy);
+//       r   = (D - m) / (kFlatPatchBand D) (how uneven: 0 lying flat; a vertex's cone or an
+//             edge's wedge has m = D/3 or D/2 at any depth, r >= 5);
+//       beta = 1 - 3 r^2 + 2 r^3 for r < 1, 0 beyond (C1 at both ends).
+//     The contact's energy is 1/2 kn Omega,  Omega = (1 - beta) D^2 + beta Q:
+//     the deepest pair's law from r = 1 on (a clearly uneven face, an impacting edge), and lying
+//     flat the energy of the same stiffness spread uniformly over the patch, kn / A per area (a
+//     Winkler foundation): force kn m at the centre of pressure, tilt stiffness kn J / A, a
+//     resting face's pressure shifting towards its low side as a real one does. Since A is fixed
+//     while a face lies flat (its whole face overlaps), dm = do(c_A), dQ = 2 m do(c_P) and
+//     dD = do(p_D) for a motion that changes the local overlap by do(x); with
+//     dr = ((1 - b r) dD - dm) / (b D)  (b = kFlatPatchBand):
+//       d Omega = a_D do(p_D) + a_A do(c_A) + a_P do(c_P),
+//       a_D = 2 (1 - beta) D + (Q - D^2) beta' (1 - b r) / (b D),
+//       a_A = -(Q - D^2) beta' / (b D),     a_P = 2 beta m,
+//     so the force is kn (a_D + a_A + a_P) / 2 (reported as `overlap`, `energy_overlap` =
+//     sqrt(Omega)) along the normal at the point (a_D p_D + a_A c_A + a_P c_P) / (a_D + a_A + a_P)
+//     (the sum is at least 1.67 D: Q <= D^2, beta' <= 0). Lying flat: kn m at c_P, whatever the
+//     meshing; a tilt moves c_P towards the low side (a restoring torque, flat is a stable rest
+//     with no chatter); an impacting, clearly tilted face gets the deepest pair; every force and
+//     torque is the gradient of one energy (test FaceContactForceIsTheGradientOfItsEnergy). The
+//     normal: (1 - beta) n_D + beta n_A, normalised, n_A the polygons' area-weighted bisector
+//     (exact; the gradient direction of Q for faces lying flat), n_D = beta x the deepest
+//     region's bisector + (1 - beta) x the kernel's deepest normal (step 4: the closest-point
+//     direction, the gradient direction of a tilted face's D). Members without a polygon in the
+//     same class (the side faces of a cube seen edge-on along its bottom edge, within the
+//     kernel's tolerance of the face's own deepest overlap) take over only where they are
+//     deeper than the polygons by more than the taper: their share rises from 0 to 1 (smooth
+//     step) as they exceed D by 1 to 2 tapers, moving D, p_D and the normal to theirs and
+//     beta to 0; within it they are the same closest points seen through the kernel's
+//     tolerance. Members that are not nearly parallel (vertex-face, edge-edge, edge-face,
+//     faces at a clear angle) carry no area; absorbed rim contacts neither place nor orient the
+//     point. The switch at 10 degrees: a face tilted that far is uneven by at least
+//     sin(10 deg) / 2 of its width over the overlap (or the overlap is a wedge, r >= 5), so both
+//     sides of the switch give the deepest pair and its overlap (the polygons' measured along
+//     the bisector, short of the perpendicular one by gap (1 / cos 5 deg - 1) = 0.4 % of the
+//     gap there) unless the face is narrower than about 1.2 layers. The baselines
+//     (paper_min_width, none) keep the kernel's midpoints: they are the paper's.
+//  6. The patch's extent, for the rocking damper and the twisting friction of contact_model.h.
+//     The force of a contact acts at one point, so a rotation of the two bodies about that
+//     point (about an axis in the contact plane: one face rocking on the other) gives no normal
+//     velocity there and the normal dashpot does not resist it, and a rotation about the normal
+//     moves nothing at the point, so point friction does not resist it either, while a real
+//     (or a pressure-like, distributed) contact of two faces is squeezed on one side and
+//     released on the other, and rubs over its whole region when it twists: the rocking of a
+//     face contact would be undamped (measured: a cube sliding down an incline with friction
+//     rocked at several rad/s, validation/contact/friction), a spinning cube would never stop
+//     and a resting one would turn under any off-centre friction (validation/contact/twist). So
+//     a class with polygons also carries
+//       patch_area          = A (m^2);
+//       patch_second_moment = the polygons' second moments of area, each moved from its own
 //                             area centroid to the contact point (parallel-axis theorem:
 //                             J_i + A_i d_i d_i^T, d_i = area_centroid_i - point), projected onto
 //                             the contact plane (P J P, P = I - n n^T): m^4, symmetric 3x3,
-//                             world frame, J n = 0.
-//     Like the point, both are those of the faces' overlap region for any meshing (the polygons
-//     tile it). A class without polygons (a vertex, an edge, a face at a clear angle) is
-//     point-like and gets 0 for both: no couple.
+//                             world frame, J n = 0;
+//       patch_mean_radius   = the region's mean distance from the point, integral of |x - p| dA
+//                             / A over the polygons projected onto the contact plane (closed
+//                             form per polygon edge, contact_polygon.h polygon_distance_integral):
+//                             the lever of Coulomb friction spread over a uniformly pressed
+//                             region turning about the point (mu F_n r_mean);
+//       face_weight         = beta (times one minus the share of members without a polygon):
+//                             how much the contact is a face lying flat. The rocking damper and
+//                             the twist spring act in proportion to it: a vertex, an edge or a
+//                             clearly tilted face (beta = 0) is a point, free to roll and to
+//                             twist as LIGGGHTS's spheres are; a ball rolling over nearly flat
+//                             facets (a vertex's cone, r >= 5) is not braked.
+//     Like the point, all are those of the faces' overlap region for any meshing (the polygons
+//     tile it). A class without polygons gets 0 for all: no couple, no twist.
 //
 // Intersecting triangles (real surfaces crossing: the soft layer was overrun). The kernel's
 // normal for such a pair (minimum-overlap separating axis) is used when finite; otherwise
@@ -138,6 +177,7 @@
 // member; no allocation when the workspace is reused.
 #pragma once
 
+#include "contact_polygon.h"
 #include "particle_contacts.h" // TriangleContact
 #include "point_links.h"
 #include "triangle_soa.h"
@@ -165,6 +205,11 @@ struct ContactPoint {
   double patch_area = 0.0;                                       // m^2
   Eigen::Matrix3d patch_second_moment = Eigen::Matrix3d::Zero(); // m^4, about `point`, in the
                                                                  // plane orthogonal to `normal`
+  double patch_mean_radius = 0.0; // m, mean distance of the patch from `point` (step 6)
+  double face_weight = 0.0;       // 1 lying flat, 0 point-like or clearly tilted (step 6)
+  // The overlap whose 1/2 kn energy_overlap^2 is the contact's elastic energy (step 5b); equal
+  // to `overlap` except for faces lying flat (there `overlap` is the force's, kn overlap).
+  double energy_overlap = 0.0; // m
 };
 
 enum class ReductionMethod {
@@ -200,6 +245,8 @@ struct ReductionWorkspace {
   std::vector<Eigen::Vector3d> points; // raw[i].point, for the links of step 1
   LinkScratch links;
   std::vector<int> parent, order, label, cls, absorbed, seeds, alive, group;
+  std::vector<ContactPolygon> polygons; // one class's contact polygons
+  std::vector<double> polygon_layers;   // per polygon: the layer, or -1 (intersecting, sunk)
 };
 
 // Reduces `n` triangle-pair contacts of one pair (entries with overlap <= 0 are ignored) and

@@ -283,8 +283,17 @@ int FixTriWall::pack_restart(int i, double *buf) {
 }
 
 void FixTriWall::unpack_restart(int nlocal, int nth) {
-  std::memcpy(history_[nlocal], tri_liggghts::restart_record(atom->extra, nlocal, nth),
-              values_per_atom_ * sizeof(double));
+  const double *record = tri_liggghts::restart_record(atom->extra, nlocal, nth);
+  const int stored = static_cast<int>(record[-1]) - 1; // the record's length prefix
+  if (stored != values_per_atom_) {
+    const std::string msg =
+        std::string(kStyle) + ": the restart file holds " + std::to_string(stored) +
+        " wall history values per particle, this build keeps " +
+        std::to_string(values_per_atom_) + " (" + std::to_string(tri::kHistoryDoubles) +
+        " per mesh): it was written by another version or with other meshes";
+    error->one(FLERR, msg.c_str());
+  }
+  std::memcpy(history_[nlocal], record, values_per_atom_ * sizeof(double));
 }
 
 int FixTriWall::size_restart(int) { return values_per_atom_ + 1; }

@@ -42,7 +42,7 @@ def test_restart_contacts(ctx):
     """2N steps against N + write_restart + (new process) read_restart + N, with rock-rock
     and rock-wall contacts (tangential history) active at the restart step."""
     make_contact_meshes(ctx.work)
-    n = 3000  # rock-rock and rock-wall contacts both active at step n (checked below)
+    n = 3500  # rock-rock and rock-wall contacts both active at step n (checked below)
     run_deck(ctx, "in.contact_cluster", {"phase": "full", "nsteps": 2 * n})
     _, out = run_deck(ctx, "in.contact_cluster_restart",
                       {"phase": "first", "nsteps": n, "thermo_every": n})

@@ -196,6 +196,145 @@ TEST(TangentialNoHistory, ViscousBelowCapCoulombAbove) {
   EXPECT_EQ(tri::tangential_force_no_history(c, Vector3d::Zero(), 10.0, 1.2), Vector3d::Zero());
 }
 
+// ---- twisting friction of face contacts ----
+
+tri::TwistPatch twist_patch(double lever, double polar_per_area) {
+  tri::TwistPatch t;
+  t.lever = lever;
+  t.polar_per_area = polar_per_area;
+  return t;
+}
+
+// Without a twist patch the friction is tangential_force_history's / _no_history's, bit for
+// bit, and the twist spring is released.
+TEST(TwistFriction, PointContactIsTheTangentialModelExactly) {
+  const ContactCoefficients c = material();
+  const Vector3d n = Vector3d(0.2, -0.3, 1).normalized(), vt(0.01, 0.02, 0.004);
+  for (const double fn : {10.0, 0.02}) {
+    Vector3d shear_a(1e-4, -2e-4, 0), shear_b = shear_a;
+    double twist = 0.3;
+    const tri::Friction f =
+        tri::friction_history(c, n, vt, 5.0, fn, 1.2, 1e-3, tri::TwistPatch(), shear_a, twist);
+    const Vector3d ft = tri::tangential_force_history(c, n, vt, fn, 1.2, 1e-3, shear_b);
+    EXPECT_EQ(f.force, ft);
+    EXPECT_EQ(shear_a, shear_b);
+    EXPECT_EQ(f.twist_torque, 0.0);
+    EXPECT_EQ(twist, 0.0);
+    EXPECT_EQ(tri::friction_no_history(c, vt, 5.0, fn, 1.2, tri::TwistPatch()).force,
+              tri::tangential_force_no_history(c, vt, fn, 1.2));
+  }
+}
+
+// Sticking: the twist spring is kt tr(J)/A per radian and its damper gammat m_eff tr(J)/A,
+// by hand; the torque opposes the relative rotation about n.
+TEST(TwistFriction, TwistSpringAndDamperByHand) {
+  ContactCoefficients c = material(); // kt 1000, gammat 10, mu 0.5
+  const Vector3d n = Vector3d::UnitZ();
+  const double ppa = 2e-6, lever = 1.5e-3, meff = 1.2, dt = 1e-3, fn = 10.0; // T_max 7.5e-3 N m
+  Vector3d shear = Vector3d::Zero();
+  double twist = 0.0;
+  const double w = 0.2; // rad/s
+  tri::Friction f =
+      tri::friction_history(c, n, Vector3d::Zero(), w, fn, meff, dt, twist_patch(lever, ppa), shear,
+                            twist);
+  EXPECT_NEAR(twist, 2e-4, 1e-18);
+  // -kt ppa twist - gammat meff ppa w = -1000 * 2e-6 * 2e-4 - 10 * 1.2 * 2e-6 * 0.2
+  EXPECT_NEAR(f.twist_torque, -4e-7 - 4.8e-6, 1e-20);
+  EXPECT_EQ(f.force, Vector3d::Zero());
+  c.tangential_damping = false;
+  f = tri::friction_history(c, n, Vector3d::Zero(), w, fn, meff, dt, twist_patch(lever, ppa), shear,
+                            twist);
+  EXPECT_NEAR(twist, 4e-4, 1e-18);
+  EXPECT_NEAR(f.twist_torque, -8e-7, 1e-20);
+  // The opposite rotation unwinds it.
+  f = tri::friction_history(c, n, Vector3d::Zero(), -2 * w, fn, meff, dt, twist_patch(lever, ppa),
+                            shear, twist);
+  EXPECT_NEAR(twist, 0.0, 1e-18);
+}
+
+// Slipping in pure twist: the torque is mu |F_n| lever (Coulomb friction spread over the patch)
+// and the spring is held there; sliding alone gives mu |F_n|, as before.
+TEST(TwistFriction, PureTwistSlipsAtMuFnTimesTheMeanRadius) {
+  const ContactCoefficients c = material();
+  const Vector3d n = Vector3d::UnitZ();
+  const double ppa = 2e-6, lever = 1.5e-3, fn = 2.0; // T_max = 0.5 * 2 * 1.5e-3 = 1.5e-3 N m
+  Vector3d shear = Vector3d::Zero();
+  double twist = 3.0; // spring -6e-3 N m: beyond the limit
+  tri::Friction f = tri::friction_history(c, n, Vector3d::Zero(), 0.0, fn, 1.2, 1e-3,
+                                          twist_patch(lever, ppa), shear, twist);
+  EXPECT_NEAR(f.twist_torque, -1.5e-3, 1e-17);
+  EXPECT_NEAR(twist, 1.5e-3 / (c.kt * ppa), 1e-14);
+  EXPECT_EQ(f.force, Vector3d::Zero());
+  // Attractive normal force: |F_n|.
+  twist = -3.0;
+  f = tri::friction_history(c, n, Vector3d::Zero(), 0.0, -fn, 1.2, 1e-3, twist_patch(lever, ppa),
+                            shear, twist);
+  EXPECT_NEAR(f.twist_torque, 1.5e-3, 1e-17);
+  // Pure sliding with a twist patch: the Coulomb cap of tangential_force_history.
+  shear = Vector3d(3e-3, 4e-3, 0);
+  twist = 0.0;
+  f = tri::friction_history(c, n, Vector3d::Zero(), 0.0, fn, 1.2, 1e-3, twist_patch(lever, ppa),
+                            shear, twist);
+  EXPECT_NEAR((f.force - Vector3d(-0.6, -0.8, 0)).norm(), 0.0, 1e-12);
+  EXPECT_NEAR((shear - Vector3d(0.6e-3, 0.8e-3, 0)).norm(), 0.0, 1e-15);
+  EXPECT_EQ(f.twist_torque, 0.0);
+  // mu = 0: nothing, both springs released.
+  ContactCoefficients frictionless = c;
+  frictionless.mu = 0.0;
+  twist = 1.0;
+  f = tri::friction_history(frictionless, n, Vector3d(0.1, 0, 0), 1.0, fn, 1.2, 1e-3,
+                            twist_patch(lever, ppa), shear, twist);
+  EXPECT_EQ(f.force, Vector3d::Zero());
+  EXPECT_EQ(f.twist_torque, 0.0);
+  EXPECT_EQ(twist, 0.0);
+}
+
+// Sliding and twisting share one budget: the springs are returned radially onto the ellipse
+// (|F| / F_max)^2 + (T / T_max)^2 = 1; the damped total is scaled onto it likewise with the
+// springs unchanged; no_history scales its viscous pair onto it.
+TEST(TwistFriction, SlidingAndTwistingShareTheEllipse) {
+  ContactCoefficients c = material();
+  const Vector3d n = Vector3d::UnitZ();
+  const double ppa = 2e-6, lever = 1.5e-3, fn = 2.0, fmax = 1.0, tmax = 1.5e-3;
+  // Springs at (3, 4) of their limits in the two directions: s = 5.
+  Vector3d shear(3.0 * fmax / c.kt, 0, 0);
+  double twist = -4.0 * tmax / (c.kt * ppa);
+  tri::Friction f = tri::friction_history(c, n, Vector3d::Zero(), 0.0, fn, 1.2, 1e-3,
+                                          twist_patch(lever, ppa), shear, twist);
+  EXPECT_NEAR(f.force.x(), -0.6 * fmax, 1e-14);
+  EXPECT_NEAR(f.twist_torque, 0.8 * tmax, 1e-17);
+  EXPECT_NEAR(std::hypot(f.force.norm() / fmax, f.twist_torque / tmax), 1.0, 1e-14);
+  EXPECT_NEAR(shear.x(), 0.6 * fmax / c.kt, 1e-17);
+  EXPECT_NEAR(twist, -0.8 * tmax / (c.kt * ppa), 1e-13);
+  // Inside the ellipse by the springs, outside with the dampers: scaled, springs kept.
+  shear = Vector3d(0.3 * fmax / c.kt, 0, 0);
+  twist = 0.0;
+  const Vector3d vt(0.05, 0, 0);
+  const double w = 100.0, meff = 1.2, dt = 1e-6;
+  const Vector3d shear_after = shear + vt * dt;
+  const double twist_after = w * dt;
+  f = tri::friction_history(c, n, vt, w, fn, meff, dt, twist_patch(lever, ppa), shear, twist);
+  const Vector3d f_raw = -c.kt * shear_after - c.gammat * meff * vt;
+  const double t_raw = -c.kt * ppa * twist_after - c.gammat * meff * ppa * w;
+  const double s = std::hypot(f_raw.norm() / fmax, t_raw / tmax);
+  ASSERT_GT(s, 1.0);
+  EXPECT_NEAR((f.force - f_raw / s).norm(), 0.0, 1e-14);
+  EXPECT_NEAR(f.twist_torque, t_raw / s, 1e-17);
+  EXPECT_NEAR((shear - shear_after).norm(), 0.0, 1e-20);
+  EXPECT_NEAR(twist, twist_after, 1e-20);
+  // no_history: viscous in both, scaled onto the ellipse when outside it.
+  const tri::Friction v = tri::friction_no_history(c, vt, w, fn, meff, twist_patch(lever, ppa));
+  const Vector3d fv = -c.gammat * meff * vt;
+  const double tv = -c.gammat * meff * ppa * w;
+  const double sv = std::hypot(fv.norm() / fmax, tv / tmax);
+  ASSERT_GT(sv, 1.0);
+  EXPECT_NEAR((v.force - fv / sv).norm(), 0.0, 1e-14);
+  EXPECT_NEAR(v.twist_torque, tv / sv, 1e-17);
+  const tri::Friction slow =
+      tri::friction_no_history(c, 1e-3 * vt, 1e-3 * w, fn, meff, twist_patch(lever, ppa));
+  EXPECT_NEAR(slow.twist_torque, 1e-3 * tv, 1e-20);
+}
+
 // ---- rocking damper of face contacts ----
 
 // A square patch of side L (J = L^4/12 diag(1, 1, 0)) and an L x W rectangle: the couple on b
@@ -404,6 +543,80 @@ TEST(PairContactForce, HistoryIsTheSameWhenTheHostSwapsTheBodies) {
   }
 }
 
+// A face-like contact: a square patch of side L about the point, in the plane orthogonal to n.
+ContactPoint face_point(const Vector3d &p, const Vector3d &n, double overlap, double L,
+                        double face_weight = 1.0) {
+  ContactPoint c = point(p, n, overlap);
+  const Vector3d nn = c.normal;
+  c.patch_area = L * L;
+  c.patch_second_moment =
+      (L * L * L * L / 12.0) * (Eigen::Matrix3d::Identity() - nn * nn.transpose());
+  c.patch_mean_radius = L * (std::sqrt(2.0) + std::asinh(1.0)) / 6.0;
+  c.face_weight = face_weight;
+  return c;
+}
+
+// The twist angle is the same seen from either body (history_flips_sign is false for it): the
+// host's swapped pair gives the mirrored torques and the same stored twist, sticking and
+// slipping.
+TEST(PairContactForce, TwistHistoryIsTheSameWhenTheHostSwapsTheBodies) {
+  ContactCoefficients c = material();
+  const Vector3d n = Vector3d(0.1, -0.2, -1).normalized();
+  const BodyState a = body(Vector3d(0, 0, 0.002), Vector3d(0.001, 0, 0), 2.0 * n, 2e-3);
+  const BodyState b = body(Vector3d(0.0002, 0, -0.002), Vector3d::Zero(), -1.0 * n, 1e-3);
+  for (const double overlap : {1e-4, 1e-7}) { // sticking, then (tiny normal force) slipping
+    ContactPoint ab = face_point(Vector3d(0.0001, 0.0002, 0), n, overlap, 0.004);
+    ContactPoint ba = ab;
+    ba.normal = -ab.normal;
+    double h_ab[tri::kHistoryDoubles] = {}, h_ba[tri::kHistoryDoubles] = {};
+    for (int step = 0; step < 3; ++step) {
+      const auto r_ab = tri::pair_contact_force({ab}, a, b, c, 1e-5, h_ab);
+      const auto r_ba = tri::pair_contact_force({ba}, b, a, c, 1e-5, h_ba);
+      EXPECT_NEAR((r_ab.force_a + r_ba.force_a).norm(), 0.0, 1e-15 * r_ab.force_a.norm());
+      EXPECT_NEAR((r_ab.torque_a - r_ba.torque_b).norm(), 0.0, 1e-15 * r_ab.torque_a.norm());
+      EXPECT_NEAR((r_ab.torque_b - r_ba.torque_a).norm(), 0.0, 1e-15 * r_ab.torque_b.norm());
+      for (int k = 0; k < tri::kHistoryDoubles; ++k) {
+        const double swapped = tri::history_flips_sign(k) ? -h_ba[k] : h_ba[k];
+        EXPECT_NEAR(h_ab[k], swapped, 1e-15) << "history value " << k << " at step " << step;
+      }
+      // b turns by -3 rad/s about n relative to a: the twist is -3 dt per step (or held at the
+      // slip limit), negative seen from both sides, and the couple on b about n opposes it.
+      EXPECT_LT(tri::slot_twist(h_ab, 0), 0.0);
+      EXPECT_EQ(tri::slot_twist(h_ab, 0), tri::slot_twist(h_ba, 0));
+      if (overlap == 1e-4) {
+        EXPECT_NEAR(tri::slot_twist(h_ab, 0), -3e-5 * (step + 1), 1e-18);
+      }
+    }
+    EXPECT_FALSE(tri::history_flips_sign(9));
+    EXPECT_TRUE(tri::history_flips_sign(tri::kHistorySlotDoubles + 5));
+  }
+}
+
+// A face lying flat, spinning about its normal against a fixed wall and slipping: the contact
+// point does not move (v_t = 0 at the centre of rotation), the torque on the spinning body
+// about n is mu F_n r_mean against the spin, and there is no force beyond the normal one. A
+// point-like contact (face weight 0) of the same patch does not resist the spin at all; half a
+// face weight halves the lever.
+TEST(PairContactForce, SpinningFaceBrakesAtMuFnTimesTheMeanRadius) {
+  ContactCoefficients c = material();
+  c.gamman = 0.0;
+  const double L = 0.004, overlap = 1e-5;
+  const BodyState cube = body(Vector3d(0, 0, 0.002), Vector3d::Zero(), Vector3d(0, 0, 20), 1.6e-4);
+  const BodyState wall = body(Vector3d(0, 0, -1), Vector3d::Zero(), Vector3d::Zero(), 0.0);
+  for (const double weight : {1.0, 0.5, 0.0}) {
+    const ContactPoint p = face_point(Vector3d::Zero(), -Vector3d::UnitZ(), overlap, L, weight);
+    double history[tri::kHistoryDoubles] = {};
+    tri::PairForceResult r;
+    for (int step = 0; step < 200; ++step)
+      r = tri::pair_contact_force({p}, cube, wall, c, 1e-5, history);
+    const double fn = c.kn * overlap;
+    EXPECT_NEAR((r.force_a - Vector3d(0, 0, fn)).norm(), 0.0, 1e-15 * fn);
+    const double want = -weight * c.mu * fn * p.patch_mean_radius;
+    EXPECT_NEAR(r.torque_a.z(), want, 1e-12 * c.mu * fn * L) << "face weight " << weight;
+    EXPECT_NEAR(r.torque_a.head<2>().norm(), 0.0, 1e-15 * fn * L);
+  }
+}
+
 TEST(PairContactForce, NewtonThirdLawAndAngularMomentumBalance) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
@@ -415,8 +628,9 @@ TEST(PairContactForce, NewtonThirdLawAndAngularMomentumBalance) {
       const BodyState a = body(rv(0.003), rv(0.1), rv(10.0), 1e-3);
       const BodyState b = body(rv(0.003), rv(0.1), rv(10.0), 2e-3);
       std::vector<ContactPoint> pts;
-      for (int i = 0; i < 6; ++i) // more than the history slots on purpose
-        pts.push_back(point(rv(0.002), rv(1.0), 1e-5 * (6 - i)));
+      for (int i = 0; i < 6; ++i) // more than the history slots on purpose; some face-like
+        pts.push_back(i % 2 ? point(rv(0.002), rv(1.0), 1e-5 * (6 - i))
+                            : face_point(rv(0.002), rv(1.0), 1e-5 * (6 - i), 0.002, 0.5 + 0.1 * i));
       double history[tri::kHistoryDoubles] = {};
       for (int step = 0; step < 3; ++step) {
         const auto r = tri::pair_contact_force(pts, a, b, c, 1e-5, history);
@@ -475,8 +689,8 @@ TEST(PairContactForce, HistoryFollowsPatchesByNormalAndPosition) {
 TEST(PairContactForce, MatchingIsByLeverAmongEqualNormals) {
   double history[tri::kHistoryDoubles] = {};
   const Vector3d down = -Vector3d::UnitZ();
-  tri::write_slot(history, 0, down, Vector3d(1, 0, 0), Vector3d(0.001, 0, 0));
-  tri::write_slot(history, 1, down, Vector3d(2, 0, 0), Vector3d(-0.001, 0, 0));
+  tri::write_slot(history, 0, down, Vector3d(1, 0, 0), Vector3d(0.001, 0, 0), 0.0);
+  tri::write_slot(history, 1, down, Vector3d(2, 0, 0), Vector3d(-0.001, 0, 0), 0.0);
   const ContactPoint pts[2] = {point(Vector3d(-0.00099, 0, 0), down, 1e-4),
                                point(Vector3d(0.00101, 0, 0), down, 1e-4)};
   int slot[tri::kHistorySlots];

@@ -111,19 +111,22 @@ TEST(ContactPolygon, CutToTheSoftLayer) {
     v.z() = -t * v.x();
   for (Vector3d &v : b.v)
     v.z() = g0 + t * v.x();
-  const double xs = (kLayer - g0) / (2 * t);
+  // The overlap is measured perpendicular to either triangle: the gap along z times
+  // cos(phi / 2) = 1 / sqrt(1 + t^2).
+  const double c = 1.0 / std::sqrt(1.0 + t * t), sl = 2 * t * c;
+  const double xs = (kLayer - c * g0) / sl;
   ASSERT_LT(xs, 0.9 * L);
   tri::ContactPolygon p;
   ASSERT_TRUE(patch(a, b, Vector3d::UnitZ(), kLayer, p));
   const double expected = 0.5 * L * L - 0.5 * (L - xs) * (L - xs);
   EXPECT_NEAR(p.area, expected, 1e-12 * expected);
-  // Overlap o0 - 2 t x on the strip x in [0, x*] of height L - x.
-  const double o0 = kLayer - g0;
-  auto F = [&](double x) { // antiderivatives of (o0 - 2 t x)(L - x) and of that times x
-    return o0 * L * x - 0.5 * (o0 + 2 * t * L) * x * x + 2 * t * x * x * x / 3.0;
+  // Overlap o0 - sl x on the strip x in [0, x*] of height L - x.
+  const double o0 = kLayer - c * g0;
+  auto F = [&](double x) { // antiderivatives of (o0 - sl x)(L - x) and of that times x
+    return o0 * L * x - 0.5 * (o0 + sl * L) * x * x + sl * x * x * x / 3.0;
   };
   auto G = [&](double x) {
-    return 0.5 * o0 * L * x * x - (o0 + 2 * t * L) * x * x * x / 3.0 + 0.5 * t * x * x * x * x;
+    return 0.5 * o0 * L * x * x - (o0 + sl * L) * x * x * x / 3.0 + 0.25 * sl * x * x * x * x;
   };
   const double W = F(xs) - F(0);
   EXPECT_NEAR(p.weight, W, 1e-12 * W);
@@ -196,7 +199,8 @@ TEST(ContactPolygon, AgreesWithQuadrature) {
         const Vector2d xl(-1.6e-3 + (i + 0.5) * h, -1.6e-3 + (j + 0.5) * h);
         if (!inside(a, xl) || !inside(b, xl))
           continue;
-        const double ha = height(a, na, xl), hb = height(b, nb, xl), o = kLayer - (hb - ha);
+        const double ha = height(a, na, xl), hb = height(b, nb, xl),
+                     o = kLayer - (hb - ha) * std::abs(m.dot(na));
         if (o < 0)
           continue;
         A += h * h;
@@ -491,7 +495,7 @@ TEST(ContactPolygon, SecondMomentAgreesWithQuadrature) {
         const Vector2d xl(-1.6e-3 + (i + 0.5) * h, -1.6e-3 + (j + 0.5) * h);
         if (!inside(a, xl) || !inside(b, xl))
           continue;
-        if (kLayer - (height(b, nb, xl) - height(a, na, xl)) < 0)
+        if (kLayer - (height(b, nb, xl) - height(a, na, xl)) * std::abs(m.dot(na)) < 0)
           continue;
         A += h * h;
         S1 += h * h * xl;
@@ -517,4 +521,110 @@ TEST(ContactPolygon, SecondMomentAgreesWithQuadrature) {
   std::printf("%d pairs compared; largest error of J relative to its trace %.1e, of the area "
               "centroid %.1e m (grid cell %.1e m)\n",
               compared, worst_j, worst_c, 3.2e-3 / 800);
+}
+
+// ---- mean distance of a patch from a point (the twisting-friction lever) ----
+
+namespace mean_distance {
+
+// Integral of |x| over the rectangle [0, X] x [0, Y] (corner at the origin), closed form.
+double corner_rectangle(double X, double Y) {
+  const double d = std::hypot(X, Y);
+  return X * Y * d / 3 + (X * X * X * std::log((Y + d) / X) + Y * Y * Y * std::log((X + d) / Y)) / 6;
+}
+
+// Integral of |x - p| over [x0, x1] x [y0, y1] for p anywhere (inside or outside): with
+// F(X, Y) = the integral from 0 to X, 0 to Y (sign(X) sign(Y) corner_rectangle(|X|, |Y|)),
+// F(x1, y1) - F(x0, y1) - F(x1, y0) + F(x0, y0), coordinates relative to p.
+double rectangle(double x0, double x1, double y0, double y1, const Vector2d &p) {
+  auto F = [](double X, double Y) {
+    if (X == 0.0 || Y == 0.0)
+      return 0.0;
+    return std::copysign(1.0, X) * std::copysign(1.0, Y) * corner_rectangle(std::abs(X), std::abs(Y));
+  };
+  x0 -= p.x(), x1 -= p.x(), y0 -= p.y(), y1 -= p.y();
+  return F(x1, y1) - F(x0, y1) - F(x1, y0) + F(x0, y0);
+}
+
+} // namespace mean_distance
+
+// A square of side s about its centre: mean distance s (sqrt 2 + asinh 1) / 6 = 0.38260 s; a
+// rectangle about a point inside and one outside it (closed form by corner rectangles); the
+// same after turning and moving the scene, in either orientation, projected along a tilted
+// normal (the area and the distances shrink with the projection), at scales 1e-6 and 1e3.
+TEST(PolygonDistanceIntegral, RectanglesByClosedForm) {
+  for (const double scale : {1e-6, 1e-3, 1e3}) {
+    const double s = 2.0 * scale;
+    const Matrix3d R =
+        Eigen::AngleAxisd(0.9, Vector3d(0.3, 0.5, -0.8).normalized()).toRotationMatrix();
+    const Vector3d shift = Vector3d(0.4, -1.3, 2.2) * scale;
+    const Vector2d corners[4] = {Vector2d(0, 0), Vector2d(s, 0), Vector2d(s, 0.6 * s),
+                                 Vector2d(0, 0.6 * s)};
+    for (const bool reverse : {false, true}) {
+      Vector3d v[4];
+      for (int k = 0; k < 4; ++k) {
+        const Vector2d c = corners[reverse ? 3 - k : k];
+        v[k] = shift + R * Vector3d(c.x(), c.y(), 0);
+      }
+      const Vector3d n = R * Vector3d::UnitZ();
+      for (const Vector2d &p : {Vector2d(0.5 * s, 0.3 * s), Vector2d(0.2 * s, 0.1 * s),
+                                Vector2d(1.7 * s, -0.4 * s), Vector2d(s, 0.3 * s)}) {
+        const Vector3d p3 = shift + R * Vector3d(p.x(), p.y(), 0.7 * scale);
+        const tri::DistanceIntegral r = tri::polygon_distance_integral(v, 4, p3, n);
+        EXPECT_NEAR(r.area, 0.6 * s * s, 1e-12 * s * s);
+        const double want = mean_distance::rectangle(0, s, 0, 0.6 * s, p);
+        EXPECT_NEAR(r.distance, want, 1e-12 * s * s * s)
+            << "scale " << scale << " point " << p.transpose() << " reversed " << reverse;
+      }
+      // Projected along a normal tilted by 0.3 rad about the rectangle's x axis: lengths along
+      // y shrink by cos 0.3 (the tilt of the projection direction).
+      const Vector3d tilted = R * Vector3d(0, std::sin(0.3), std::cos(0.3));
+      const Vector3d centre = shift + R * Vector3d(0.5 * s, 0.3 * s, 0);
+      const tri::DistanceIntegral r = tri::polygon_distance_integral(v, 4, centre, tilted);
+      const double c = std::cos(0.3);
+      EXPECT_NEAR(r.area, 0.6 * s * s * c, 1e-12 * s * s);
+      EXPECT_NEAR(r.distance, mean_distance::rectangle(-0.5 * s, 0.5 * s, -0.3 * s * c, 0.3 * s * c,
+                                                       Vector2d::Zero()),
+                  1e-12 * s * s * s);
+    }
+    Vector3d sq[4];
+    for (int k = 0; k < 4; ++k)
+      sq[k] = Vector3d(k == 1 || k == 2 ? s : 0, k >= 2 ? s : 0, 0);
+    const tri::DistanceIntegral r =
+        tri::polygon_distance_integral(sq, 4, Vector3d(0.5 * s, 0.5 * s, 0), Vector3d::UnitZ());
+    EXPECT_NEAR(r.distance / r.area, s * (std::sqrt(2.0) + std::asinh(1.0)) / 6, 1e-13 * s);
+  }
+  // Fewer than 3 corners: nothing.
+  const Vector3d two[2] = {Vector3d::Zero(), Vector3d::UnitX()};
+  EXPECT_EQ(tri::polygon_distance_integral(two, 2, Vector3d::Zero(), Vector3d::UnitZ()).area, 0.0);
+}
+
+// The polygon's corners (lifted to the mid-surface) come with the patch, and their integrals
+// are the patch's: area, and the mean distance from the area centroid against quadrature over
+// the nested pair's smaller triangle.
+TEST(PolygonDistanceIntegral, PatchCornersCarryThePatch) {
+  const Tri big = {{Vector3d(-2e-3, -2e-3, 0), Vector3d(3e-3, -2e-3, 0), Vector3d(0, 3e-3, 0)}};
+  const Tri small = lifted(kBase, 0.3 * kLayer);
+  tri::ContactPolygon p;
+  ASSERT_TRUE(patch(big, small, Vector3d::UnitZ(), kLayer, p));
+  ASSERT_GE(p.num_vertices, 3);
+  for (int k = 0; k < p.num_vertices; ++k)
+    EXPECT_NEAR(p.vertices[k].z(), 0.15 * kLayer, 1e-15);
+  const tri::DistanceIntegral r =
+      tri::polygon_distance_integral(p.vertices, p.num_vertices, p.area_centroid, Vector3d::UnitZ());
+  EXPECT_NEAR(r.area, p.area, 1e-12 * p.area);
+  // Quadrature over kBase: barycentric midpoints of a fine grid.
+  const int N = 600;
+  double sum = 0.0;
+  const Vector3d c = p.area_centroid;
+  for (int i = 0; i < N; ++i)
+    for (int j = 0; i + j < N; ++j) {
+      for (int up = 0; up < (i + j + 1 < N ? 2 : 1); ++up) {
+        const double u = (i + (up ? 2.0 : 1.0) / 3.0) / N, w = (j + (up ? 2.0 : 1.0) / 3.0) / N;
+        const Vector3d x = kBase.v[0] + u * (kBase.v[1] - kBase.v[0]) + w * (kBase.v[2] - kBase.v[0]);
+        sum += std::hypot(x.x() - c.x(), x.y() - c.y());
+      }
+    }
+  const double quadrature = sum * area(kBase) / (double(N) * N);
+  EXPECT_NEAR(r.distance, quadrature, 1e-5 * quadrature);
 }

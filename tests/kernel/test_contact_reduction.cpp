@@ -375,9 +375,17 @@ std::vector<ContactPoint> reduce_crossed(const std::vector<TriangleContact> &raw
                               soa_of(crossed_triangles(count_b, 1)), kEps, p);
 }
 
+// Hand-made contacts name triangles that are never parallel (no contact polygons) and lie a
+// metre away from the contacts' points, so that an intersecting contact's depth through the
+// intersection (no vertex within the crossing's footprint) adds nothing to its own.
 std::vector<ContactPoint> reduce_hand(const std::vector<TriangleContact> &raw,
                                       const tri::ReductionParams &p) {
-  return reduce_crossed(raw, 16, 16, p);
+  Mesh a = crossed_triangles(16, 0), b = crossed_triangles(16, 1);
+  for (Mesh *m : {&a, &b})
+    for (Tri &t : *m)
+      for (Vector3d &v : t.v)
+        v += Vector3d(1.0, 1.0, 1.0);
+  return tri::reduce_contacts(raw, soa_of(a), kEps, soa_of(b), kEps, p);
 }
 
 TriangleContact hand_contact(int ta, int tb, const Vector3d &p, const Vector3d &n, double d,
@@ -605,6 +613,9 @@ TEST(ContactReductionPoint, SlightlyTiltedFaceSlidesFromTheAreaCentreToTheLowEdg
                     "overlap %.6e\n",
                     tilt, 2 * k * k, plane_k, dx, points[0].point.y() - face_centre.y(),
                     points[0].overlap);
+        // Step 6: the face weight is 1 - 3 r^2 + 2 r^3 below the band's end, 0 beyond it.
+        const double want_weight = r < 1.0 ? (1 - r) * (1 - r) * (1 + 2 * r) : 0.0;
+        EXPECT_NEAR(points[0].face_weight, want_weight, 1e-6) << "tilt " << tilt;
         if (flat) {
           ASSERT_LT(r, 0.01);
           // The deepest point: at this tilt the whole face lies within kDeepestTaper of the
@@ -615,9 +626,15 @@ TEST(ContactReductionPoint, SlightlyTiltedFaceSlidesFromTheAreaCentreToTheLowEdg
           EXPECT_LE(std::abs(points[0].point.y() - face_centre.y()), slide * h);
           EXPECT_NEAR(points[0].overlap, expected_overlap, 1e-9 * kLayer);
         } else {
-          EXPECT_NEAR(dx, h * std::cos(tilt), 1e-6 * kSide); // on the low edge
+          // At the low edge: the deepest region of the polygons, within the taper's extent
+          // (kDeepestTaper of the layer, over a slope of sin(tilt)) of the edge; the overlap
+          // is the polygons' (measured along their bisector: short of the perpendicular one
+          // by gap (1 / cos(tilt / 2) - 1)).
+          const double taper_extent = 1e-3 * kLayer / slope;
+          EXPECT_LE(dx, h * std::cos(tilt) + 1e-9 * kSide);
+          EXPECT_GE(dx, h * std::cos(tilt) - taper_extent);
           EXPECT_LE(std::abs(points[0].point.y() - face_centre.y()), h * (1 + 1e-9));
-          EXPECT_NEAR(points[0].overlap, o_low, 1e-9 * kLayer);
+          EXPECT_NEAR(points[0].overlap, o_low, gap * tilt * tilt / 4 + 1e-9 * kLayer);
         }
       }
     if (flat) {
@@ -638,8 +655,8 @@ TEST(ContactReductionPoint, FaceContactForceIsTheGradientOfItsEnergy) {
   const Mesh b = plane(1.5 * kSide, 4);
   const double band_tilt = tri::kFlatPatchBand * (kLayer - gap) / h; // tilt where r = 1
   for (const int k : {1, 4}) {
-    auto state = [&](double tilt, double lift, Vector3d &point, double &overlap,
-                     Vector3d &centre) {
+    auto state = [&](double tilt, double lift, Vector3d &point, double &overlap, Vector3d &centre,
+                     Vector3d *normal = nullptr) {
       const Matrix3d R = Eigen::AngleAxisd(tilt, Vector3d::UnitY()).toRotationMatrix();
       Mesh a;
       centre = place_cube(a, k, xy, gap + lift, R);
@@ -649,6 +666,8 @@ TEST(ContactReductionPoint, FaceContactForceIsTheGradientOfItsEnergy) {
       ASSERT_EQ(points.size(), 1u);
       point = points[0].point;
       overlap = points[0].overlap;
+      if (normal)
+        *normal = points[0].normal;
     };
     // Path in (tilt, lift): from -2 band_tilt through flat to 1.5 band_tilt (the overlap goes
     // from clearly tilted through flat to clearly tilted the other way, where the energy is
@@ -658,15 +677,16 @@ TEST(ContactReductionPoint, FaceContactForceIsTheGradientOfItsEnergy) {
     auto tilt_at = [&](int i) { return band_tilt * (-2.0 + 3.5 * i / steps); };
     auto lift_at = [&](int i) { return 0.1 * kLayer * (double(i) / steps) * (double(i) / steps); };
     double work = 0.0, overlap0 = 0.0, overlap1 = 0.0;
-    Vector3d p, c, c_begin, c_end, unused;
-    double o;
+    Vector3d p = Vector3d::Zero(), c, c_begin, c_end, unused;
+    double o = 0.0;
+    Vector3d n = -Vector3d::UnitZ();
     state(tilt_at(0), lift_at(0), unused, overlap0, c_begin);
     for (int i = 0; i < steps; ++i) {
       state(tilt_at(i + 1), lift_at(i + 1), unused, o, c_end);
-      state(0.5 * (tilt_at(i) + tilt_at(i + 1)), 0.5 * (lift_at(i) + lift_at(i + 1)), p, o, c);
-      // Force on the cube (a): kn o along +z (kn = 1; n from a to b is -z). Torque about its
+      state(0.5 * (tilt_at(i) + tilt_at(i + 1)), 0.5 * (lift_at(i) + lift_at(i + 1)), p, o, c, &n);
+      // Force on the cube (a): kn o along -n (kn = 1; n from a to b, about -z). Torque about its
       // centre (p - c) x F; a rotation by d(tilt) is about +y through the centre.
-      const Vector3d f(0, 0, o);
+      const Vector3d f = -o * n;
       work += f.dot(c_end - c_begin) + (p - c).cross(f).y() * (tilt_at(i + 1) - tilt_at(i));
       c_begin = c_end;
     }
@@ -733,6 +753,13 @@ TEST(ContactReductionPoint, PatchAreaAndSecondMomentAreTheOverlapsForEveryMeshin
   want(0, 0) = wy * wx * wx * wx / 12;
   want(1, 1) = wx * wy * wy * wy / 12;
   const double scale = std::pow(kSide, 4);
+  // Mean distance of the wx x wy rectangle from its centre, closed form (four corner
+  // rectangles: integral over [0, X] x [0, Y] of |x| dA).
+  auto corner = [](double X, double Y) {
+    const double d = std::hypot(X, Y);
+    return X * Y * d / 3 + (X * X * X * std::log((Y + d) / X) + Y * Y * Y * std::log((X + d) / Y)) / 6;
+  };
+  const double want_radius = 4 * corner(0.5 * wx, 0.5 * wy) / (wx * wy);
   double worst = 0.0;
   for (const int plane_k : {1, 16})
     for (const int k : {1, 2, 4, 8})
@@ -753,6 +780,11 @@ TEST(ContactReductionPoint, PatchAreaAndSecondMomentAreTheOverlapsForEveryMeshin
         EXPECT_LE(err, (source == 2 ? 1e-6 : 1e-9) * scale) << "tri/face " << 2 * k * k << " plane " << plane_k
                                      << " source " << source << "\n"
                                      << points[0].patch_second_moment;
+        // The twisting lever: the rectangle's mean distance from its centre (the point), and a
+        // face lying flat has face weight 1.
+        EXPECT_NEAR(points[0].patch_mean_radius, want_radius, 1e-9 * kSide)
+            << "tri/face " << 2 * k * k << " plane " << plane_k << " source " << source;
+        EXPECT_NEAR(points[0].face_weight, 1.0, 1e-9);
       }
   std::printf("overhanging cube: largest error of the patch's second moment %.1e side^4\n", worst);
 }
@@ -779,6 +811,8 @@ TEST(ContactReductionPoint, EdgeOrVertexContactHasNoPatch) {
       ASSERT_EQ(points.size(), 1u);
       EXPECT_EQ(points[0].patch_area, 0.0);
       EXPECT_EQ(points[0].patch_second_moment, Matrix3d::Zero());
+      EXPECT_EQ(points[0].patch_mean_radius, 0.0);
+      EXPECT_EQ(points[0].face_weight, 0.0); // free to twist
     }
   Mesh a;
   place_cube(a, 2, xy, gap, yaw(0.3));

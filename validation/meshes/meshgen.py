@@ -4,7 +4,7 @@ Standard library only, so every validation script (and plain python3) can import
 
   python3 meshgen.py icosphere LEVEL RADIUS out.stl   # 20 * 4**LEVEL triangles
   python3 meshgen.py cube N SIDE out.stl              # N x N squares per face: 12 N^2 triangles
-  python3 meshgen.py plane HALF_WIDTH out.stl         # a square of 2 triangles at z = 0, normal +z
+  python3 meshgen.py plane HALF_WIDTH out.stl [N]     # a square at z = 0, normal +z: 2 N^2 triangles
 """
 import math
 import sys
@@ -70,9 +70,20 @@ def cube(n, side):
     return verts, faces
 
 
-def plane(half):
-    v = [(-half, -half, 0.0), (half, -half, 0.0), (half, half, 0.0), (-half, half, 0.0)]
-    return v, [(0, 1, 2), (0, 2, 3)]
+def plane(half, n=1):
+    """A square [-half, half]^2 at z = 0, normal +z: an n x n grid of squares, 2 n^2 triangles."""
+    if n == 1:
+        v = [(-half, -half, 0.0), (half, -half, 0.0), (half, half, 0.0), (-half, half, 0.0)]
+        return v, [(0, 1, 2), (0, 2, 3)]
+    v = [(-half + 2 * half * i / n, -half + 2 * half * j / n, 0.0)
+         for j in range(n + 1) for i in range(n + 1)]
+    f = []
+    for j in range(n):
+        for i in range(n):
+            c00, c10 = j * (n + 1) + i, j * (n + 1) + i + 1
+            c01, c11 = c00 + n + 1, c10 + n + 1
+            f += [(c00, c10, c11), (c00, c11, c01)]
+    return v, f
 
 
 def write_stl(path, verts, faces, name="mesh"):
@@ -99,6 +110,7 @@ if __name__ == "__main__":
     elif kind == "cube":
         write_stl(sys.argv[4], *cube(int(sys.argv[2]), float(sys.argv[3])), "cube")
     elif kind == "plane":
-        write_stl(sys.argv[3], *plane(float(sys.argv[2])), "plane")
+        write_stl(sys.argv[3], *plane(float(sys.argv[2]),
+                                      int(sys.argv[4]) if len(sys.argv) > 4 else 1), "plane")
     else:
         sys.exit(__doc__)
