@@ -343,6 +343,7 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
   const Eigen::Matrix3d j = plane * about_point * plane;
   p.patch_second_moment = 0.5 * (j + j.transpose());
   p.patch_area = area;
+  p.damping_point = s.point + area1 / area;
   // The mean distance of the patch from the point, over the same polygons, projected onto the
   // contact plane (numerator and denominator alike).
   DistanceIntegral dist;
