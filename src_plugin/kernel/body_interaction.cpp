@@ -1,8 +1,10 @@
 #include "body_interaction.h"
 
 #include "point_triangle.h"
+#include "separating_axis.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace tri {
@@ -44,15 +46,122 @@ std::size_t InteractionScratch::bytes() const {
          r.polygons.capacity() * sizeof(ContactPolygon) +
          (r.points.capacity() + nodes.capacity() + node_velocities.capacity()) *
              sizeof(Eigen::Vector3d) +
-         ints * sizeof(int);
+         ints * sizeof(int) + wall_apart.capacity() +
+         4 * wall_planes.n_x.capacity() * sizeof(double);
 }
+
+namespace {
+
+// The unit normal (outward for a closed, outward-oriented surface) of the triangle of `t`
+// whose centroid is nearest `p`; zero for no triangles.
+Eigen::Vector3d nearest_face_normal(const TriangleSoA &t, const Eigen::Vector3d &p) {
+  double best = std::numeric_limits<double>::infinity();
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+  for (int k = 0; k < t.num_triangles(); ++k) {
+    const Eigen::Vector3d v0 = t.vertex(k, 0), v1 = t.vertex(k, 1), v2 = t.vertex(k, 2);
+    const double d2 = ((v0 + v1 + v2) / 3.0 - p).squaredNorm();
+    if (d2 < best) {
+      best = d2;
+      normal = (v1 - v0).cross(v2 - v0);
+    }
+  }
+  return normal;
+}
+
+// A new axis for the cache after a full search without contacts, the first of these that
+// proves the gap: between the closest points of the triangle pairs it tested; between the
+// centres; against the face of b nearest a's centre; along the face of a nearest b's centre
+// (a particle over a wall patch: the patch's normal). Zero if none does.
+Eigen::Vector3d new_separating_axis(const Body &a, const Body &b, double cutoff,
+                                    const ContactWorkspace &ws) {
+  const TriangleSoA &ta = *a.triangles, &tb = *b.triangles;
+  double best = std::numeric_limits<double>::infinity();
+  Eigen::Vector3d closest = Eigen::Vector3d::Zero();
+  for (int k = 0; k < ws.tested; ++k) {
+    const TrianglePairDistance &r = ws.results[k];
+    if (r.distance < best && r.distance > 0.0) {
+      best = r.distance;
+      closest = r.point_b - r.point_a;
+    }
+  }
+  const Eigen::Vector3d centres = b.state.x - a.state.x;
+  for (const Eigen::Vector3d &axis : {closest, centres}) {
+    if (separated_along(ta, tb, axis, cutoff))
+      return axis.normalized();
+  }
+  const Eigen::Vector3d face_b = -nearest_face_normal(tb, a.state.x);
+  if (separated_along(ta, tb, face_b, cutoff))
+    return face_b.normalized();
+  const Eigen::Vector3d face_a = nearest_face_normal(ta, b.state.x);
+  if (separated_along(ta, tb, face_a, cutoff))
+    return face_a.normalized();
+  return Eigen::Vector3d::Zero();
+}
+
+// Marks in scratch.wall_apart the triangles of `wall` whose plane has all of `particle`'s
+// vertices more than the cutoff (plus separating_axis.h's slack) on one side; true if that
+// is every triangle. O(wall triangles x particle vertices).
+bool walls_apart_by_planes(const TriangleSoA &particle, const TriangleSoA &wall, double cutoff,
+                           InteractionScratch &scratch) {
+  const int n = wall.num_triangles();
+  scratch.wall_apart.assign(static_cast<std::size_t>(n), 0);
+  compute_triangle_planes(wall, scratch.wall_planes);
+  const TrianglePlanes &p = scratch.wall_planes;
+  const double wall_magnitude = soa_extent(wall, Eigen::Vector3d::UnitX()).magnitude;
+  int apart = 0;
+  for (int t = 0; t < n; ++t) {
+    const Eigen::Vector3d normal(p.n_x[t], p.n_y[t], p.n_z[t]);
+    if (normal == Eigen::Vector3d::Zero())
+      continue;
+    const Extent e = soa_extent(particle, normal);
+    const double slack = kSeparationSlackRatio * (e.magnitude + wall_magnitude + std::fabs(cutoff));
+    const double beyond = cutoff + slack;
+    const bool off = e.lo - p.offset[t] >= beyond || p.offset[t] - e.hi >= beyond;
+    scratch.wall_apart[t] = off;
+    apart += off;
+  }
+  return n > 0 && apart == n;
+}
+
+} // namespace
 
 PairForceResult body_interaction(const Body &a, const Body &b, const InteractionSettings &s,
                                  double dt, double *history, InteractionScratch &scratch,
-                                 ContactStats &stats) {
+                                 ContactStats &stats, SeparationCache cache) {
+  const double cutoff = a.epsilon + b.epsilon;
+  if (cache.axis && (cache.axis[0] != 0.0 || cache.axis[1] != 0.0 || cache.axis[2] != 0.0) &&
+      separated_along(*a.triangles, *b.triangles, Eigen::Vector3d(cache.axis), cutoff)) {
+    // Exactly what the search below returns for a pair without contacts.
+    ++stats.bodies_separated;
+    scratch.points.clear();
+    return pair_contact_force(scratch.points, a.state, b.state, s.coefficients, dt, history);
+  }
+  // A wall patch: its triangles whose plane a lies beyond (either side) cannot touch a; if
+  // that is all of them, a touches nothing, also where no single axis separates a from the
+  // patch (a floor and a side wall around the particle).
+  const std::uint8_t *skip = nullptr;
+  if (b.is_wall() && s.distance.cull && s.distance.tight_cull &&
+      walls_apart_by_planes(*a.triangles, *b.triangles, cutoff, scratch)) {
+    ++stats.bodies_separated;
+    scratch.points.clear();
+    return pair_contact_force(scratch.points, a.state, b.state, s.coefficients, dt, history);
+  }
+  if (b.is_wall() && s.distance.cull && s.distance.tight_cull)
+    skip = scratch.wall_apart.data();
   scratch.triangle_contacts.clear();
   find_triangle_contacts(*a.triangles, a.epsilon, *b.triangles, b.epsilon, s.distance,
-                         scratch.triangle_contacts, stats, scratch.distance);
+                         scratch.triangle_contacts, stats, scratch.distance, skip);
+  if (cache.axis && cache.update) {
+    const Eigen::Vector3d axis = scratch.triangle_contacts.empty()
+                                     ? new_separating_axis(a, b, cutoff, scratch.distance)
+                                     : Eigen::Vector3d::Zero();
+    for (int d = 0; d < 3; ++d)
+      cache.axis[d] = axis[d];
+  }
+  if (scratch.triangle_contacts.empty()) { // the reduction of nothing needs no parameters
+    scratch.points.clear();
+    return pair_contact_force(scratch.points, a.state, b.state, s.coefficients, dt, history);
+  }
 
   ReductionParams params;
   params.method = s.reduction;

@@ -9,6 +9,7 @@
 #include "particle_contacts.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace tri {
@@ -27,6 +28,9 @@ struct InteractionScratch {
   ReductionWorkspace reduction;
   // A wall patch's corners and their velocities, gathered by the host (fix tri/wall).
   std::vector<Eigen::Vector3d> nodes, node_velocities;
+  // Wall triangles proven apart from the particle by their own planes, and those planes.
+  std::vector<std::uint8_t> wall_apart;
+  TrianglePlanes wall_planes;
 
   std::size_t bytes() const; // heap memory held (approximate for the reduction's vectors)
 };
@@ -44,14 +48,30 @@ struct Body {
   bool is_wall() const { return !(state.mass > 0.0); }
 };
 
+// The separating axis the host keeps for one body pair between steps (separating_axis.h):
+// `axis` holds 3 doubles, world frame, pointing from a towards b, all zero for none. A stored
+// axis is verified first; if it still proves the bodies apart (O(vertices)), no triangle pair
+// is examined and the result is exactly the full search's (no contacts). Otherwise, for a wall
+// patch, each wall triangle's own plane is tested (the particle entirely beyond it: that
+// triangle is not searched; all of them: apart, also for a patch that wraps round the particle,
+// where no single axis exists); then the full search runs and, when it finds no contact and
+// `update` is set, a new axis is stored if it proves the bodies apart (the direction between
+// the closest points tested, between the centres, or along the nearest face normals), else
+// zero. A contact clears it. Values flip sign with the roles of a and b.
+struct SeparationCache {
+  double *axis = nullptr; // null: no cache kept
+  bool update = true;     // false: read only (LIGGGHTS's setup of a run)
+};
+
 // Forces between a (a particle) and b (a particle or a wall) for one time step of length dt.
 // `history` holds kHistoryDoubles values kept by the host for this pair (null for tangential
 // no_history). Statistics of the distance kernel are added to `stats`. The reference direction
 // of the reduction (contact_reduction.h: for intersecting triangles without a usable normal)
 // is the line of centres for two particles, and for a wall the direction from a's centre to
 // the closest point of the patch.
+// `cache` as above (default: none; the result does not depend on it).
 PairForceResult body_interaction(const Body &a, const Body &b, const InteractionSettings &s,
                                  double dt, double *history, InteractionScratch &scratch,
-                                 ContactStats &stats);
+                                 ContactStats &stats, SeparationCache cache = {});
 
 } // namespace tri

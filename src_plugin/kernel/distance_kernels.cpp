@@ -120,7 +120,7 @@ void penalty_distances(const TriangleSoA &a, const TriangleSoA &b, const Triangl
   for (int first = 0; first < count; first += kPairLanes) {
     const int n = std::min(kPairLanes, count - first);
     gather(a, b, pairs + first, n, block);
-    penalty_block(settings.newton_iterations, block, settings.penalty, settings.tolerance, r);
+    penalty_block(settings.newton_iterations, block, settings.penalty, settings.tolerance, r, n);
     count_newton(r, n, counters);
     for (int l = 0; l < n; ++l) {
       Eigen::Vector3d ta[3], tb[3];
@@ -152,7 +152,7 @@ void hybrid_distances(const TriangleSoA &a, const TriangleSoA &b, const Triangle
   PendingBruteForce pending(a, b, out);
   const auto run_penalty = [&](int first, int n) {
     gather(a, b, pairs + first, n, block);
-    penalty_block(settings.newton_iterations, block, settings.penalty, settings.tolerance, r);
+    penalty_block(settings.newton_iterations, block, settings.penalty, settings.tolerance, r, n);
     count_newton(r, n, counters);
   };
   if (batch_size <= 0) {

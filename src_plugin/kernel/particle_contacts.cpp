@@ -1,9 +1,11 @@
 #include "particle_contacts.h"
 
 #include "distance_kernels.h"
+#include "separating_axis.h"
 #include "triangle_boxes.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <stdexcept>
 
@@ -17,6 +19,7 @@ ContactStats &ContactStats::operator+=(const ContactStats &o) {
   triangle_pairs_tested += o.triangle_pairs_tested;
   triangle_pairs_culled += o.triangle_pairs_culled;
   contacts += o.contacts;
+  bodies_separated += o.bodies_separated;
   HybridCounters::operator+=(o);
   return *this;
 }
@@ -32,7 +35,12 @@ std::size_t ContactWorkspace::bytes() const {
       (cull.lo_x.capacity() + cull.lo_y.capacity() + cull.lo_z.capacity() + cull.hi_x.capacity() +
        cull.hi_y.capacity() + cull.hi_z.capacity()) *
           sizeof(double);
-  return boxes(boxes_a) + boxes(boxes_b) + cull_bytes + pairs.capacity() * sizeof(TrianglePairIndex) +
+  const std::size_t frame_bytes =
+      (frame_a.x.capacity() + frame_a.y.capacity() + frame_a.z.capacity() + frame_b.x.capacity() +
+       frame_b.y.capacity() + frame_b.z.capacity()) *
+      sizeof(double);
+  return boxes(boxes_a) + boxes(boxes_b) + boxes(frame_boxes_a) + boxes(frame_boxes_b) +
+         cull_bytes + frame_bytes + pairs.capacity() * sizeof(TrianglePairIndex) +
          results.capacity() * sizeof(TrianglePairDistance);
 }
 
@@ -41,8 +49,42 @@ namespace {
 // Fills ws.pairs[0, count) with the candidate pairs in row-major order; returns count.
 // Culling: each triangle box computed once per call; the two-stage cull of
 // triangle_boxes.h (keeps exactly the pairs of the full box cull).
+// The tight cull (ContactOptions::tight_cull): world boxes, boxes in a frame whose first axis
+// joins the centres of the two whole boxes (where tilted triangles have tight extents), then
+// the separating-axis test of each surviving pair; each stage alone keeps every pair closer
+// than its margin.
+int tight_candidates(const TriangleSoA &a, const TriangleSoA &b, double margin,
+                     ContactWorkspace &ws, const std::uint8_t *skip_b) {
+  const TriangleBoxes &wa = ws.boxes_a, &wb = ws.boxes_b;
+  Eigen::Vector3d axis, magnitude;
+  for (int d = 0; d < 3; ++d) {
+    axis[d] = 0.5 * ((wb.all_lo[d] + wb.all_hi[d]) - (wa.all_lo[d] + wa.all_hi[d]));
+    magnitude[d] = std::max(std::max(std::fabs(wa.all_lo[d]), std::fabs(wa.all_hi[d])),
+                            std::max(std::fabs(wb.all_lo[d]), std::fabs(wb.all_hi[d])));
+  }
+  const double length = axis.norm();
+  if (!(length > 0.0) || !std::isfinite(length))
+    return cull_triangle_pairs(wa, wb, margin, ws.cull, ws.pairs);
+  // Rotated coordinates and plane distances carry rounding of a few ulps of the largest
+  // coordinate: the slack of separating_axis.h covers it many times over.
+  const double slack = kSeparationSlackRatio * (2.0 * magnitude.maxCoeff() + margin);
+  const double frame_margin = margin + slack;
+  const Eigen::Vector3d m = axis / length, u = m.unitOrthogonal(), w = m.cross(u);
+  Eigen::Matrix3d frame;
+  frame.row(0) = m;
+  frame.row(1) = u;
+  frame.row(2) = w;
+  transform_soa(a, frame, Eigen::Vector3d::Zero(), ws.frame_a);
+  transform_soa(b, frame, Eigen::Vector3d::Zero(), ws.frame_b);
+  compute_triangle_boxes(ws.frame_a, ws.frame_boxes_a);
+  compute_triangle_boxes(ws.frame_b, ws.frame_boxes_b);
+  int count = cull_triangle_pairs_two_frames(wa, wb, ws.frame_boxes_a, ws.frame_boxes_b, margin,
+                                             frame_margin, ws.cull, ws.pairs, skip_b);
+  return separating_axis_filter(a, b, frame_margin, ws.pairs.data(), count);
+}
+
 int collect_candidates(const TriangleSoA &a, const TriangleSoA &b, double margin, bool cull,
-                       ContactWorkspace &ws) {
+                       bool tight, ContactWorkspace &ws, const std::uint8_t *skip_b) {
   const int na = a.num_triangles(), nb = b.num_triangles();
   const long long all = static_cast<long long>(na) * nb;
   if (!cull && all <= kMaxUnculledPairs) {
@@ -57,6 +99,8 @@ int collect_candidates(const TriangleSoA &a, const TriangleSoA &b, double margin
   }
   compute_triangle_boxes(a, ws.boxes_a);
   compute_triangle_boxes(b, ws.boxes_b);
+  if (tight)
+    return tight_candidates(a, b, margin, ws, skip_b);
   return cull_triangle_pairs(ws.boxes_a, ws.boxes_b, margin, ws.cull, ws.pairs);
 }
 
@@ -85,13 +129,14 @@ void run_kernel(const TriangleSoA &a, const TriangleSoA &b, const ContactOptions
 
 void find_triangle_contacts(const TriangleSoA &a, double eps_a, const TriangleSoA &b, double eps_b,
                             const ContactOptions &opt, std::vector<TriangleContact> &out,
-                            ContactStats &stats, ContactWorkspace &ws) {
+                            ContactStats &stats, ContactWorkspace &ws, const std::uint8_t *skip_b) {
   if (!penalty_iterations_supported(opt.newton_iterations))
     throw std::invalid_argument("find_triangle_contacts: unsupported newton_iterations");
   if (opt.batch_size < 1)
     throw std::invalid_argument("find_triangle_contacts: batch_size must be >= 1");
   const double cutoff = eps_a + eps_b;
-  const int count = collect_candidates(a, b, cutoff, opt.cull, ws);
+  const int count = collect_candidates(a, b, cutoff, opt.cull, opt.tight_cull, ws, skip_b);
+  ws.tested = count;
   stats.triangle_pairs_tested += count;
   stats.triangle_pairs_culled +=
       static_cast<long long>(a.num_triangles()) * b.num_triangles() - count;

@@ -24,6 +24,7 @@
 #include "triangle_soa.h"
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <vector>
 
 namespace tri {
@@ -52,6 +53,11 @@ struct ContactOptions {
   // cull runs anyway: it drops only pairs that cannot be in contact, so the contacts are the
   // same, and without it two 1e5-triangle shapes would need 1e10 pairs (terabytes).
   bool cull = true;
+  // With cull: also boxes in a frame along the line between the two bodies' box centres and
+  // the separating-axis test per pair (triangle_boxes.h: cull_triangle_pairs_two_frames,
+  // separating_axis_filter);
+  // false: world-frame boxes only (the cull before issue 12). Same contacts either way.
+  bool tight_cull = true;
   int newton_iterations = 4;     // penalty steps; one of penalty_iterations_supported()
   double tolerance_ratio = 1e-4; // hybrid distance tolerance / min(eps_a, eps_b)
   PenaltyParameters penalty;     // scale-free penalty weight and regularisation
@@ -76,6 +82,8 @@ struct ContactStats : HybridCounters {
   long long triangle_pairs_tested = 0; // pairs given to the distance kernel
   long long triangle_pairs_culled = 0; // pairs removed by the box cull
   long long contacts = 0;              // pairs reported
+  long long bodies_separated = 0;      // body pairs proven apart without a search (a kept
+                                       // axis, wall planes: body_interaction.h)
 
   ContactStats &operator+=(const ContactStats &o);
 };
@@ -86,8 +94,11 @@ struct ContactStats : HybridCounters {
 struct ContactWorkspace {
   TriangleBoxes boxes_a, boxes_b;
   CullScratch cull;
+  TriangleSoA frame_a, frame_b; // the triangles in the cull's second frame
+  TriangleBoxes frame_boxes_a, frame_boxes_b;
   std::vector<TrianglePairIndex> pairs;
   std::vector<TrianglePairDistance> results;
+  int tested = 0; // pairs of the last call: pairs[0, tested) with results[0, tested)
 
   std::size_t bytes() const; // heap memory held
 };
@@ -95,9 +106,13 @@ struct ContactWorkspace {
 // Appends to `out` every triangle pair of a and b with distance < eps_a + eps_b, sorted by
 // (tri_a, tri_b) so results do not depend on thread count; adds to `stats`.
 // Throws std::invalid_argument for an unsupported newton_iterations or batch_size < 1.
+// `skip_b` (optional, one entry per triangle of b): triangles of b the caller has proven
+// farther than eps_a + eps_b from all of a (body_interaction.h: wall triangles whose plane a
+// lies beyond); with the tight cull they are not searched. The result is the same.
 void find_triangle_contacts(const TriangleSoA &a, double eps_a, const TriangleSoA &b, double eps_b,
                             const ContactOptions &opt, std::vector<TriangleContact> &out,
-                            ContactStats &stats, ContactWorkspace &ws);
+                            ContactStats &stats, ContactWorkspace &ws,
+                            const std::uint8_t *skip_b = nullptr);
 
 // The same with a workspace of its own (allocates on every call: tests, tools, one-off uses).
 void find_triangle_contacts(const TriangleSoA &a, double eps_a, const TriangleSoA &b, double eps_b,

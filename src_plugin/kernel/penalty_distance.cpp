@@ -119,17 +119,16 @@ TRI_LANE void bounds_lane(const double (*c)[kPairLanes], int l, PenaltyBlockResu
   out.lower[l] = b_lo - a_hi;
 }
 
-} // namespace
-
-template <int Iterations>
-void penalty_block(const TrianglePairBlock &block, const PenaltyParameters &params,
+// The first `Lanes` lanes of a block (the same per-lane code for any Lanes).
+template <int Iterations, int Lanes>
+void penalty_lanes(const TrianglePairBlock &block, const PenaltyParameters &params,
                    double step_tolerance, PenaltyBlockResult &out) {
   const double weight = params.penalty_weight, reg = params.regularisation;
   const double step_tol2 = step_tolerance * step_tolerance;
 #pragma omp simd
-  for (int l = 0; l < kPairLanes; ++l)
+  for (int l = 0; l < Lanes; ++l)
     penalty_lane<Iterations>(block.c, l, weight, reg, step_tol2, out);
-  for (int l = 0; l < kPairLanes; ++l) {
+  for (int l = 0; l < Lanes; ++l) {
     double d2 = 0.0;
     for (int k = 0; k < 3; ++k) {
       const double d = out.point_b[k][l] - out.point_a[k][l];
@@ -138,15 +137,28 @@ void penalty_block(const TrianglePairBlock &block, const PenaltyParameters &para
     out.upper[l] = std::sqrt(d2);
   }
 #pragma omp simd
-  for (int l = 0; l < kPairLanes; ++l)
+  for (int l = 0; l < Lanes; ++l)
     bounds_lane(block.c, l, out);
+}
+
+} // namespace
+
+template <int Iterations>
+void penalty_block(const TrianglePairBlock &block, const PenaltyParameters &params,
+                   double step_tolerance, PenaltyBlockResult &out, int used) {
+  // A block with at most half its lanes used (the last of a short list) runs half a block:
+  // each lane's result is the same bits either way (tested).
+  if (used <= kPairLanes / 2)
+    penalty_lanes<Iterations, kPairLanes / 2>(block, params, step_tolerance, out);
+  else
+    penalty_lanes<Iterations, kPairLanes>(block, params, step_tolerance, out);
 }
 
 #define TRI_PENALTY_COUNTS(X) X(1) X(2) X(3) X(4) X(5) X(6) X(7) X(8) X(10) X(12) X(16) X(24) X(32)
 
 #define TRI_INSTANTIATE(N)                                                                         \
   template void penalty_block<N>(const TrianglePairBlock &, const PenaltyParameters &, double,     \
-                                 PenaltyBlockResult &);
+                                 PenaltyBlockResult &, int);
 TRI_PENALTY_COUNTS(TRI_INSTANTIATE)
 #undef TRI_INSTANTIATE
 
@@ -162,10 +174,10 @@ bool penalty_iterations_supported(int iterations) {
 }
 
 void penalty_block(int iterations, const TrianglePairBlock &block, const PenaltyParameters &params,
-                   double step_tolerance, PenaltyBlockResult &out) {
+                   double step_tolerance, PenaltyBlockResult &out, int used) {
 #define TRI_CASE(N)                                                                                \
   case N:                                                                                          \
-    return penalty_block<N>(block, params, step_tolerance, out);
+    return penalty_block<N>(block, params, step_tolerance, out, used);
   switch (iterations) {
     TRI_PENALTY_COUNTS(TRI_CASE)
   default:

@@ -52,11 +52,13 @@ struct alignas(64) PenaltyBlockResult {
                                  // the step tolerance; 0 if none was
 };
 
-// Runs `Iterations` steps on every lane of `block`. `step_tolerance` (length) only feeds
-// converged_at, the Newton histogram; it does not change the result.
+// Runs `Iterations` steps on the lanes of `block`: all of them, or, when the caller uses at
+// most half (`used` <= kPairLanes / 2), only the first half, at half the cost; every lane's
+// result is the same either way. `step_tolerance` (length) only feeds converged_at, the
+// Newton histogram; it does not change the result.
 template <int Iterations>
 void penalty_block(const TrianglePairBlock &block, const PenaltyParameters &params,
-                   double step_tolerance, PenaltyBlockResult &out);
+                   double step_tolerance, PenaltyBlockResult &out, int used = kPairLanes);
 
 // The iteration counts that are instantiated: 1..8, 10, 12, 16, 24, 32.
 bool penalty_iterations_supported(int iterations);
@@ -64,7 +66,7 @@ constexpr int kMaxPenaltyIterations = 32;
 
 // Run-time choice among the instantiated counts; throws std::invalid_argument otherwise.
 void penalty_block(int iterations, const TrianglePairBlock &block, const PenaltyParameters &params,
-                   double step_tolerance, PenaltyBlockResult &out);
+                   double step_tolerance, PenaltyBlockResult &out, int used = kPairLanes);
 
 // Floating-point operations per pair, counted by hand from penalty_distance.cpp (FMA = 2),
 // for the benchmark's GFLOP/s estimate only.

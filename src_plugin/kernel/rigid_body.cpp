@@ -7,35 +7,108 @@
 namespace tri {
 namespace {
 
-// Quaternions as 4-vectors (w, x, y, z) so that the scheme reads as in the paper.
-using Vec4 = Eigen::Vector4d;
-
-Vec4 as_vec(const Eigen::Quaterniond &q) { return {q.w(), q.x(), q.y(), q.z()}; }
-
-// P_k x = x (x) e_k, right multiplication by the unit quaternion of body axis k; the
-// columns of the quaternion product matrix S(x) are x, P_0 x, P_1 x, P_2 x. For unit q,
-// P_k q is the direction on S^3 in which q moves when the body turns about its axis k.
-Vec4 permute(int k, const Vec4 &x) {
-  switch (k) {
-  case 0:
-    return {-x[1], x[0], x[3], -x[2]};
-  case 1:
-    return {-x[2], -x[3], x[0], x[1]};
-  default:
-    return {-x[3], x[2], -x[1], x[0]};
+// sin and cos of a sub-step's angle. A DEM step turns a particle by far less than 0.05 rad
+// (omega dt/2 = 0.05 is 5000 rad/s at dt = 2e-5 s); there the Taylor series to x^11 and x^12
+// leave a truncation error below 1e-21 (relative), so the values are sin and cos to an ulp or
+// two at a fraction of a libm call (the rotation was most of a step in free flight). Both
+// are exactly odd and even, as std::sin and std::cos, which keeps the step time-reversible.
+// Beyond 0.05 rad: std::sin and std::cos if Libm, else the flag `large` (the caller redoes
+// that particle with Libm; below 0.05 rad both give the same bits).
+template <bool Libm>
+inline __attribute__((always_inline)) void sub_step_sincos(double x, double &s, double &c,
+                                                           int &large) {
+  const double x2 = x * x;
+  s = x * (1.0 + x2 * (-1.0 / 6.0 +
+                       x2 * (1.0 / 120.0 +
+                             x2 * (-1.0 / 5040.0 +
+                                   x2 * (1.0 / 362880.0 + x2 * (-1.0 / 39916800.0))))));
+  c = 1.0 + x2 * (-0.5 + x2 * (1.0 / 24.0 +
+                               x2 * (-1.0 / 720.0 +
+                                     x2 * (1.0 / 40320.0 +
+                                           x2 * (-1.0 / 3628800.0 + x2 * (1.0 / 479001600.0))))));
+  const bool big = !(std::fabs(x) <= 0.05);
+  if constexpr (Libm) {
+    if (big) {
+      s = std::sin(x);
+      c = std::cos(x);
+    }
+  } else {
+    large = large | static_cast<int>(big);
   }
 }
 
-// Exact flow of h_k = (p . P_k q)^2 / (8 I_k) for time h: a rotation by 2 zeta of the
-// pair (q, p) in the planes (q, P_k q) and (p, P_k p). zeta = h L_k / (2 I_k), so the body
-// turns by omega_k h about its own axis k while L_k is unchanged.
-void free_rotate(int k, double h, double inertia_k, Vec4 &q, Vec4 &p) {
-  const Vec4 pq = permute(k, q);
-  const double zeta = h * p.dot(pq) / (4.0 * inertia_k);
-  const double c = std::cos(zeta), s = std::sin(zeta);
-  const Vec4 pp = permute(k, p);
-  q = c * q + s * pq;
-  p = c * p + s * pp;
+// One NO_SQUISH sub-step about body axis K for time h: the exact flow of
+// h_K = (p . P_K q)^2 / (8 I_K), a rotation by 2 zeta of the pair (q, p) in the planes
+// (q, P_K q) and (p, P_K p), zeta = h L_K / (2 I_K): the body turns by omega_K h about its own
+// axis K while L_K is unchanged. P_K x = x (x) e_K is right multiplication by the unit
+// quaternion of body axis K (the columns of the quaternion product matrix S(x) are x, P_0 x,
+// P_1 x, P_2 x); for unit q, P_K q is the direction on S^3 in which q moves when the body
+// turns about its axis K. Quaternions as 4-vectors (w, x, y, z), as in the paper.
+template <int K> inline __attribute__((always_inline)) void permute(const double x[4], double y[4]) {
+  if constexpr (K == 0) {
+    y[0] = -x[1], y[1] = x[0], y[2] = x[3], y[3] = -x[2];
+  } else if constexpr (K == 1) {
+    y[0] = -x[2], y[1] = -x[3], y[2] = x[0], y[3] = x[1];
+  } else {
+    y[0] = -x[3], y[1] = x[2], y[2] = -x[1], y[3] = x[0];
+  }
+}
+
+template <int K, bool Libm>
+inline __attribute__((always_inline)) void sub_step(double h, double inertia_k, double q[4],
+                                                    double p[4], int &large) {
+  double pq[4], pp[4];
+  permute<K>(q, pq);
+  permute<K>(p, pp);
+  const double zeta = h * (p[0] * pq[0] + p[1] * pq[1] + p[2] * pq[2] + p[3] * pq[3]) /
+                      (4.0 * inertia_k);
+  double c, s;
+  sub_step_sincos<Libm>(zeta, s, c, large);
+  for (int k = 0; k < 4; ++k) {
+    q[k] = c * q[k] + s * pq[k];
+    p[k] = c * p[k] + s * pp[k];
+  }
+}
+
+// rotate_free on plain doubles: the one implementation behind rotate_free and
+// rotate_free_many, so both give the same bits. q = (w, x, y, z) in and out.
+template <bool Libm>
+inline __attribute__((always_inline)) void rotor_step(double q[4], const double l[3],
+                                                      const double inertia[3], double dt,
+                                                      int &large) {
+  const double n0 = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+  for (int k = 0; k < 4; ++k)
+    q[k] /= n0;
+  // L_body = R(q)^T L_space
+  double r[9];
+  rigid_detail::rotation_matrix(q, r);
+  const double lb0 = r[0] * l[0] + r[3] * l[1] + r[6] * l[2];
+  const double lb1 = r[1] * l[0] + r[4] * l[1] + r[7] * l[2];
+  const double lb2 = r[2] * l[0] + r[5] * l[1] + r[8] * l[2];
+  // Conjugate momentum p = 2 S(q) (0, L_body).
+  double p0[4], p1[4], p2[4], p[4];
+  permute<0>(q, p0);
+  permute<1>(q, p1);
+  permute<2>(q, p2);
+  for (int k = 0; k < 4; ++k)
+    p[k] = 2.0 * (lb0 * p0[k] + lb1 * p1[k] + lb2 * p2[k]);
+  sub_step<2, Libm>(0.5 * dt, inertia[2], q, p, large);
+  sub_step<1, Libm>(0.5 * dt, inertia[1], q, p, large);
+  sub_step<0, Libm>(dt, inertia[0], q, p, large);
+  sub_step<1, Libm>(0.5 * dt, inertia[1], q, p, large);
+  sub_step<2, Libm>(0.5 * dt, inertia[2], q, p, large);
+  // Each sub-step is an orthogonal map of (q, p), so |q| = 1 holds analytically; roundoff
+  // makes it random-walk, and every consumer (toRotationMatrix, the world-frame triangles)
+  // assumes a unit q: a norm of 1 + d would scale the particle by 1 + 2d. Renormalising is
+  // a projection back onto the constraint surface the exact map already preserves, so it
+  // only removes roundoff (p is rebuilt from q and L on the next call, so it needs none).
+  const double n1 = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+  for (int k = 0; k < 4; ++k)
+    q[k] /= n1;
+  // L_space is left untouched: every sub-step conserves it exactly (it turns the body and
+  // counter-rotates L_body), so the advanced pair's L_space equals the input in exact
+  // arithmetic. Re-expressing it as R(q') S(q')^T p / 2 was measured to add a roundoff drift
+  // of |L| (3e-11 relative over 1e5 steps); keeping it makes L bitwise conserved.
 }
 
 // splitmix64's output function (Steele, Lea, Flood 2014): a bijective 64-bit mixer.
@@ -53,29 +126,57 @@ double to_unit(std::uint64_t bits) { return static_cast<double>(bits >> 11) * 0x
 void rotate_free(Eigen::Quaterniond &q, Eigen::Vector3d &angmom_space,
                  const Eigen::Vector3d &principal_inertia, double dt) {
   assert(principal_inertia.minCoeff() > 0.0);
-  q.normalize();
-  const Eigen::Vector3d l_body = q.conjugate() * angmom_space;
-  Vec4 qv = as_vec(q);
-  // Conjugate momentum p = 2 S(q) (0, L_body).
-  Vec4 p =
-      2.0 * (l_body[0] * permute(0, qv) + l_body[1] * permute(1, qv) + l_body[2] * permute(2, qv));
-  const Eigen::Vector3d &inertia = principal_inertia;
-  free_rotate(2, 0.5 * dt, inertia[2], qv, p);
-  free_rotate(1, 0.5 * dt, inertia[1], qv, p);
-  free_rotate(0, dt, inertia[0], qv, p);
-  free_rotate(1, 0.5 * dt, inertia[1], qv, p);
-  free_rotate(2, 0.5 * dt, inertia[2], qv, p);
-  // Each sub-step is an orthogonal map of (q, p), so |q| = 1 holds analytically; roundoff
-  // makes it random-walk, and every consumer (toRotationMatrix, the world-frame triangles)
-  // assumes a unit q: a norm of 1 + d would scale the particle by 1 + 2d. Renormalising is
-  // a projection back onto the constraint surface the exact map already preserves, so it
-  // only removes roundoff (p is rebuilt from q and L on the next call, so it needs none).
+  double qv[4] = {q.w(), q.x(), q.y(), q.z()};
+  const double l[3] = {angmom_space[0], angmom_space[1], angmom_space[2]};
+  const double inertia[3] = {principal_inertia[0], principal_inertia[1], principal_inertia[2]};
+  int large = 0;
+  rotor_step<true>(qv, l, inertia, dt, large);
   q = Eigen::Quaterniond(qv[0], qv[1], qv[2], qv[3]);
-  q.normalize();
-  // angmom_space is left untouched: every R_k conserves L_space exactly (it turns the body
-  // and counter-rotates L_body), so the advanced pair's L_space equals the input in exact
-  // arithmetic. Re-expressing it as R(q') S(q')^T p / 2 was measured to add a roundoff
-  // drift of |L| (3e-11 relative over 1e5 steps); keeping it makes L bitwise conserved.
+}
+
+namespace {
+
+// One particle of rotate_free_many (a function of its own: the `omp simd` lowering of the
+// caller would turn these address-taken locals into per-lane arrays GCC cannot vectorise).
+template <bool Libm>
+inline __attribute__((always_inline)) void rotor_lane(int k, double *qw, double *qx, double *qy,
+                                                      double *qz, const double *lx,
+                                                      const double *ly, const double *lz,
+                                                      const double *i0, const double *i1,
+                                                      const double *i2, double dt, double *wx,
+                                                      double *wy, double *wz, int *large_out) {
+  double q[4] = {qw[k], qx[k], qy[k], qz[k]};
+  const double l[3] = {lx[k], ly[k], lz[k]}, inertia[3] = {i0[k], i1[k], i2[k]};
+  int large = 0;
+  rotor_step<Libm>(q, l, inertia, dt, large);
+  const double inverse[3] = {1.0 / inertia[0], 1.0 / inertia[1], 1.0 / inertia[2]};
+  double w[3];
+  rigid_detail::omega_of_unit(q, l, inverse, w);
+  if constexpr (!Libm)
+    large_out[k] = large;
+  // a large-angle particle keeps its input for the second pass
+  qw[k] = large ? qw[k] : q[0];
+  qx[k] = large ? qx[k] : q[1];
+  qy[k] = large ? qy[k] : q[2];
+  qz[k] = large ? qz[k] : q[3];
+  wx[k] = w[0], wy[k] = w[1], wz[k] = w[2];
+}
+
+} // namespace
+
+void rotate_free_many(int n, double *qw, double *qx, double *qy, double *qz, const double *lx,
+                      const double *ly, const double *lz, const double *i0, const double *i1,
+                      const double *i2, double dt, double *wx, double *wy, double *wz,
+                      int *large) {
+  // All particles with the series, vectorised across particles; a particle that turns by
+  // more than 0.05 rad in a sub-step keeps its input and is redone with std::sin and std::cos
+  // (rotate_free's path: the same bits wherever the series is used).
+#pragma omp simd
+  for (int k = 0; k < n; ++k)
+    rotor_lane<false>(k, qw, qx, qy, qz, lx, ly, lz, i0, i1, i2, dt, wx, wy, wz, large);
+  for (int k = 0; k < n; ++k)
+    if (large[k])
+      rotor_lane<true>(k, qw, qx, qy, qz, lx, ly, lz, i0, i1, i2, dt, wx, wy, wz, large);
 }
 
 Eigen::Vector3d body_angmom(const Eigen::Quaterniond &q, const Eigen::Vector3d &angmom_space) {
@@ -84,10 +185,9 @@ Eigen::Vector3d body_angmom(const Eigen::Quaterniond &q, const Eigen::Vector3d &
 
 Eigen::Vector3d angular_velocity(const Eigen::Quaterniond &q, const Eigen::Vector3d &angmom_space,
                                  const Eigen::Vector3d &principal_inertia) {
-  const Eigen::Quaterniond u = q.normalized();
-  const Eigen::Vector3d omega_body =
-      (u.conjugate() * angmom_space).cwiseQuotient(principal_inertia);
-  return u * omega_body;
+  // R diag(1/I) R^T L with R the rotation of q/|q| (one matrix, no normalised copy of q).
+  const Eigen::Matrix3d r = q.normalized().toRotationMatrix();
+  return r * (r.transpose() * angmom_space).cwiseQuotient(principal_inertia);
 }
 
 Eigen::Vector3d angmom_from_omega(const Eigen::Quaterniond &q, const Eigen::Vector3d &omega_space,

@@ -47,6 +47,55 @@ Eigen::Vector3d body_angmom(const Eigen::Quaterniond &q, const Eigen::Vector3d &
 Eigen::Vector3d angular_velocity(const Eigen::Quaterniond &q, const Eigen::Vector3d &angmom_space,
                                  const Eigen::Vector3d &principal_inertia);
 
+namespace rigid_detail {
+// R(q) of a unit quaternion q = (w, x, y, z), row-major (r[3 i + j] = R_ij).
+inline __attribute__((always_inline)) void rotation_matrix(const double q[4], double r[9]) {
+  const double tx = 2.0 * q[1], ty = 2.0 * q[2], tz = 2.0 * q[3];
+  const double twx = tx * q[0], twy = ty * q[0], twz = tz * q[0];
+  const double txx = tx * q[1], txy = ty * q[1], txz = tz * q[1];
+  const double tyy = ty * q[2], tyz = tz * q[2], tzz = tz * q[3];
+  r[0] = 1.0 - (tyy + tzz), r[1] = txy - twz, r[2] = txz + twy;
+  r[3] = txy + twz, r[4] = 1.0 - (txx + tzz), r[5] = tyz - twx;
+  r[6] = txz - twy, r[7] = tyz + twx, r[8] = 1.0 - (txx + tyy);
+}
+// omega = R diag(1/I) R^T L for a unit q, from the inverse moments.
+inline __attribute__((always_inline)) void omega_of_unit(const double q[4], const double l[3],
+                                                         const double inverse[3], double w[3]) {
+  double r[9];
+  rotation_matrix(q, r);
+  const double b0 = (r[0] * l[0] + r[3] * l[1] + r[6] * l[2]) * inverse[0];
+  const double b1 = (r[1] * l[0] + r[4] * l[1] + r[7] * l[2]) * inverse[1];
+  const double b2 = (r[2] * l[0] + r[5] * l[1] + r[8] * l[2]) * inverse[2];
+  w[0] = r[0] * b0 + r[1] * b1 + r[2] * b2;
+  w[1] = r[3] * b0 + r[4] * b1 + r[5] * b2;
+  w[2] = r[6] * b0 + r[7] * b1 + r[8] * b2;
+}
+} // namespace rigid_detail
+
+// The same for a unit q (rotate_free leaves it so) and the inverse principal moments
+// 1/I_k: R diag(1/I) R^T L with no normalisation, the per-step form of fix tri/nve (the
+// omega rotate_free_many returns, bit for bit). Equal to angular_velocity to rounding.
+inline Eigen::Vector3d angular_velocity_unit(const Eigen::Quaterniond &q,
+                                             const Eigen::Vector3d &angmom_space,
+                                             const Eigen::Vector3d &inverse_inertia) {
+  const double qv[4] = {q.w(), q.x(), q.y(), q.z()};
+  const double l[3] = {angmom_space[0], angmom_space[1], angmom_space[2]};
+  const double inv[3] = {inverse_inertia[0], inverse_inertia[1], inverse_inertia[2]};
+  double w[3];
+  rigid_detail::omega_of_unit(qv, l, inv, w);
+  return {w[0], w[1], w[2]};
+}
+
+// rotate_free for n particles at once, vectorised across them (fix tri/nve's loop), in
+// structure-of-arrays form: q = (qw, qx, qy, qz) advanced in place, bit for bit as rotate_free
+// would; L (space frame) unchanged by the step; principal moments i0, i1, i2; and the angular
+// velocity of the advanced state, (wx, wy, wz) = angular_velocity_unit(q', L, 1/I) bit for bit.
+// `scratch` holds n ints. All arrays of length n, not aliased.
+void rotate_free_many(int n, double *qw, double *qx, double *qy, double *qz, const double *lx,
+                      const double *ly, const double *lz, const double *i0, const double *i1,
+                      const double *i2, double dt, double *wx, double *wy, double *wz,
+                      int *scratch);
+
 // Inverse of angular_velocity: L_space = R diag(I) R^T omega_space (e.g. to start a particle
 // from a LIGGGHTS `omega`).
 Eigen::Vector3d angmom_from_omega(const Eigen::Quaterniond &q, const Eigen::Vector3d &omega_space,

@@ -74,4 +74,41 @@ struct CullScratch {
 int cull_triangle_pairs(const TriangleBoxes &a, const TriangleBoxes &b, double margin,
                         CullScratch &scratch, std::vector<TrianglePairIndex> &pairs);
 
+// The same cull in two frames at once (issue 12, item 1): `a`, `b` are the world-frame boxes,
+// `fa`, `fb` the boxes of the same triangles in a second orthonormal frame (rotated
+// coordinates, e.g. with its first axis along the line between the bodies, where world boxes
+// of tilted triangles are loose). A pair is kept only if its boxes overlap with `margin` in
+// the world frame and with `frame_margin` in the second frame; each test alone keeps every
+// pair closer than its margin (a box gap along any unit axis is at most the distance), so the
+// intersection does too. Stage 1 tests each triangle against the other body's whole box in
+// both frames, stage 2 the pairs of survivors; kept pairs in row-major order, as above.
+// frame_margin must cover the rounding of the rotated coordinates (particle_contacts.cpp adds
+// separating_axis.h's slack).
+// `skip_b` (optional, b.num_triangles() entries): b's triangles already known to be farther
+// than the margin from all of a (nonzero: dropped in stage 1).
+int cull_triangle_pairs_two_frames(const TriangleBoxes &a, const TriangleBoxes &b,
+                                   const TriangleBoxes &fa, const TriangleBoxes &fb, double margin,
+                                   double frame_margin, CullScratch &scratch,
+                                   std::vector<TrianglePairIndex> &pairs,
+                                   const std::uint8_t *skip_b = nullptr);
+
+// Unit normals of every triangle (SoA: n_x[t], n_y[t], n_z[t]) and the plane offsets
+// n . v0; a degenerate triangle gets a zero normal (it then separates nothing). (The plane
+// test of wall triangles, body_interaction.cpp.)
+struct TrianglePlanes {
+  AlignedVector<double> n_x, n_y, n_z, offset;
+};
+void compute_triangle_planes(const TriangleSoA &soa, TrianglePlanes &planes);
+
+// Separating-axis filter: drops pair k of pairs[0, count) when the two triangles are proven
+// farther apart than `margin` along one of the 11 axes of the separating-axis test (the two
+// face normals, the nine cross products of an edge of each): all vertices of one project more
+// than margin (times the axis length) beyond all vertices of the other. A projection gap
+// never exceeds the distance, so no pair closer than `margin` is dropped. Vectorised across
+// pairs (blocks of kPairLanes, as the distance kernels); keeps the order of the survivors;
+// returns their count. `margin` must cover rounding (particle_contacts.cpp adds the slack of
+// separating_axis.h).
+int separating_axis_filter(const TriangleSoA &a, const TriangleSoA &b, double margin,
+                           TrianglePairIndex *pairs, int count);
+
 } // namespace tri

@@ -94,9 +94,16 @@ TRI_INLINE void brute_force_lane(const double (*c)[kPairLanes], int l, double *d
 void brute_force_block(const TrianglePairBlock &block, int n, TrianglePairDistance out[]) {
   alignas(64) double dist2[kPairLanes], pa[3][kPairLanes], pb[3][kPairLanes];
   alignas(64) int exact[kPairLanes]; // touching or intersecting: finish with the scalar path
+  // At most half the lanes used (the last fallbacks of a pair): half a block, same bits.
+  if (n <= kPairLanes / 2) {
 #pragma omp simd
-  for (int l = 0; l < kPairLanes; ++l)
-    brute_force_lane(block.c, l, dist2, pa, pb, exact);
+    for (int l = 0; l < kPairLanes / 2; ++l)
+      brute_force_lane(block.c, l, dist2, pa, pb, exact);
+  } else {
+#pragma omp simd
+    for (int l = 0; l < kPairLanes; ++l)
+      brute_force_lane(block.c, l, dist2, pa, pb, exact);
+  }
   for (int l = 0; l < n; ++l) {
     if (exact[l]) {
       Eigen::Vector3d ta[3], tb[3];

@@ -43,7 +43,8 @@ TrianglePairDistance triangle_distance(const Eigen::Vector3d a[3], const Eigen::
 // The same for the pairs in lanes 0..n-1 of a block (n <= kPairLanes; lanes n.. are
 // ignored). The 15 checks and the intersection test run vectorised across all lanes; lanes
 // that touch or intersect are finished by triangle_distance. Results are bit-identical to
-// triangle_distance on the same pair.
+// triangle_distance on the same pair (also when n <= kPairLanes / 2, where only the first half
+// of the lanes runs).
 void brute_force_block(const TrianglePairBlock &block, int n, TrianglePairDistance out[]);
 
 // Floating-point operations of the vectorised part of brute_force_block per pair (15

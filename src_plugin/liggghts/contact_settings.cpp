@@ -48,7 +48,7 @@ bool parse_contact_keyword(int narg, char **arg, int *i, ContactSettings &s,
   const std::string key = arg[*i];
   static const char *known[] = {"kernel", "newton_iters", "batch", "parallel", "cull", "reduction",
                                 "tangential", "absolute_damping", "limitForce",
-                                "tangential_damping", "model"};
+                                "tangential_damping", "model", "separation"};
   bool is_known = false;
   for (const char *k : known)
     is_known = is_known || key == k;
@@ -96,7 +96,17 @@ bool parse_contact_keyword(int narg, char **arg, int *i, ContactSettings &s,
       fail(error, style, "'parallel' expects pairs, triangles, batches or none, got '" + v + "'");
     }
   } else if (key == "cull") {
-    d.cull = on_off(key, value, error, style);
+    if (v == "boxes") {
+      d.cull = true;
+      d.tight_cull = false;
+    } else if (v == "yes" || v == "no" || v == "on" || v == "off") {
+      d.cull = on_off(key, value, error, style);
+      d.tight_cull = true;
+    } else {
+      fail(error, style, "'cull' expects yes, boxes or no, got '" + v + "'");
+    }
+  } else if (key == "separation") {
+    s.separation = on_off(key, value, error, style);
   } else if (key == "reduction") {
     if (v == "clusters")
       s.interaction.reduction = tri::ReductionMethod::clusters;

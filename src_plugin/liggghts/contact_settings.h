@@ -6,7 +6,11 @@
 //   parallel pairs|triangles|batches|none
 //                                      OpenMP over particle pairs (default), over the triangle
 //                                      pairs of one particle pair, over batches, or off
-//   cull yes|no                        bounding-box culling of triangle pairs (default yes)
+//   cull yes|boxes|no                  culling of triangle pairs: boxes in two frames and face
+//                                      planes (yes, default), world-frame boxes only (boxes),
+//                                      none (no); the contacts are the same
+//   separation yes|no                  keep each body pair's last separating axis and verify it
+//                                      before any triangle pair (default yes; no: search always)
 //   reduction clusters|paper|none      contact reduction (default clusters; see
 //                                      contact_reduction.h)
 //   tangential history|no_history      (default history)
@@ -38,6 +42,7 @@ struct ContactSettings {
   tri::InteractionSettings interaction; // coefficients: only the switches are set here
   PairLoop loop = PairLoop::particle_pairs;
   tri::MaterialModel model = tri::MaterialModel::hooke_stiffness;
+  bool separation = true; // keep separating axes (body_interaction.h: SeparationCache)
 };
 
 // Consumes the keywords it knows from arg[*i..narg), advancing *i; returns false at the first

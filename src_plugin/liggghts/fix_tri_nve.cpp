@@ -47,7 +47,8 @@ void FixTriNVE::setup(int) {
     const Eigen::Quaterniond q = particles_->orientation(i);
     const Eigen::Vector3d inertia = particles_->principal_inertia(i);
     const Eigen::Vector3d w_now(omega[i][0], omega[i][1], omega[i][2]);
-    if (tri::angular_velocity(q, particles_->angular_momentum(i), inertia) == w_now)
+    if (tri::angular_velocity_unit(q, particles_->angular_momentum(i), inertia.cwiseInverse()) ==
+        w_now) // what sync_omega wrote
       continue;
     particles_->set_angular_momentum(i, tri::angmom_from_omega(q, w_now, inertia));
     sync_omega(i);
@@ -61,8 +62,9 @@ void FixTriNVE::kick_rotation(int i, double dt) {
 }
 
 void FixTriNVE::sync_omega(int i) {
-  const Eigen::Vector3d w = tri::angular_velocity(
-      particles_->orientation(i), particles_->angular_momentum(i), particles_->principal_inertia(i));
+  const Eigen::Vector3d w =
+      tri::angular_velocity_unit(particles_->orientation(i), particles_->angular_momentum(i),
+                                 particles_->principal_inertia(i).cwiseInverse());
   for (int k = 0; k < 3; ++k)
     atom->omega[i][k] = w[k];
 }
@@ -82,14 +84,17 @@ void FixTriNVE::initial_integrate(int) {
       v[i][k] += dtfm * f[i][k];
       x[i][k] += dtv_ * v[i][k];
     }
-    kick_rotation(i, dtf_);
+    // kick_rotation, rotate_free and sync_omega in one pass over the atom's state.
+    const double *t = atom->torque[i];
+    Eigen::Vector3d L = particles_->angular_momentum(i) + dtf_ * Eigen::Vector3d(t[0], t[1], t[2]);
     Eigen::Quaterniond q = particles_->orientation(i);
-    Eigen::Vector3d L = particles_->angular_momentum(i);
     const Eigen::Vector3d inertia = particles_->principal_inertia(i);
     tri::rotate_free(q, L, inertia, dtv_);
     particles_->set_orientation(i, q);
     particles_->set_angular_momentum(i, L);
-    sync_omega(i);
+    const Eigen::Vector3d w = tri::angular_velocity_unit(q, L, inertia.cwiseInverse());
+    for (int k = 0; k < 3; ++k)
+      atom->omega[i][k] = w[k];
   }
 }
 

@@ -34,7 +34,7 @@ using namespace FixConst;
 namespace {
 
 // state_ columns
-constexpr int kShape = 0, kQuat = 1, kAngmom = 5;
+constexpr int kShape = 0, kQuat = FixTriParticles::kQuatColumn;
 // pending_ columns
 constexpr int kForce = 0, kTorque = 3, kFlag = 6;
 constexpr double kUnset = -1.0; // shape by the assign rule once the atom has a tag
@@ -223,22 +223,57 @@ void FixTriParticles::pre_force(int) {
   // Atoms inserted during a run (fix insert/pour) arrive unset; their tags exist by now.
   initialise_unset_atoms();
   comm->forward_comm_fix(this);
-  update_world_triangles(atom->nlocal + atom->nghost);
+  // A new force evaluation: world-frame triangles are built when a source asks for them.
+  const std::size_t n = static_cast<std::size_t>(atom->nlocal + atom->nghost);
+  if (world_.size() < n)
+    world_.resize(n);
+  if (world_stamp_.size() < n)
+    world_stamp_.resize(n, 0);
+  ++evaluation_;
   board_.clear_tallies(); // this force evaluation's sources publish next
 }
 
-void FixTriParticles::update_world_triangles(int n) {
-  if (static_cast<int>(world_.size()) < n)
-    world_.resize(n);
+void FixTriParticles::transform_atom(int i) {
+  const int s = shape_index(i);
+  if (s < 0)
+    return;
   double **x = atom->x;
-  for (int i = 0; i < n; ++i) {
-    const int s = shape_index(i);
-    if (s < 0)
+  const Eigen::Matrix3d rotation = orientation(i).toRotationMatrix();
+  tri::transform_soa(shapes_[s].soa, rotation, Eigen::Vector3d(x[i][0], x[i][1], x[i][2]),
+                     world_[i]);
+}
+
+void FixTriParticles::ensure_world_triangles(const int *atoms, int n, int threads) {
+  const std::size_t need = static_cast<std::size_t>(atom->nlocal + atom->nghost);
+  if (world_.size() < need)
+    world_.resize(need);
+  if (world_stamp_.size() < need)
+    world_stamp_.resize(need, 0);
+  // Each atom once: marked here, serially, then transformed (possibly on several threads).
+  pending_world_.clear();
+  for (int k = 0; k < n; ++k) {
+    const int i = atoms[k];
+    if (world_stamp_[i] == evaluation_)
       continue;
-    const Eigen::Matrix3d rotation = orientation(i).toRotationMatrix();
-    tri::transform_soa(shapes_[s].soa, rotation, Eigen::Vector3d(x[i][0], x[i][1], x[i][2]),
-                       world_[i]);
+    world_stamp_[i] = evaluation_;
+    pending_world_.push_back(i);
   }
+  const int count = static_cast<int>(pending_world_.size());
+  if (threads > 1 && count >= 64) {
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (int k = 0; k < count; ++k)
+      transform_atom(pending_world_[k]);
+  } else {
+    for (int k = 0; k < count; ++k)
+      transform_atom(pending_world_[k]);
+  }
+}
+
+void FixTriParticles::update_world_triangles(int n) {
+  std::vector<int> all(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i)
+    all[i] = i;
+  ensure_world_triangles(all.data(), n);
 }
 
 tri::Body FixTriParticles::body(int i) const {
@@ -253,36 +288,6 @@ tri::Body FixTriParticles::body(int i) const {
   b.state.omega = Eigen::Vector3d(atom->omega[i][0], atom->omega[i][1], atom->omega[i][2]);
   b.state.mass = atom->rmass[i];
   return b;
-}
-
-Eigen::Quaterniond FixTriParticles::orientation(int i) const {
-  const double *q = state_[i] + kQuat;
-  return Eigen::Quaterniond(q[0], q[1], q[2], q[3]);
-}
-
-void FixTriParticles::set_orientation(int i, const Eigen::Quaterniond &q) {
-  double *d = state_[i] + kQuat;
-  d[0] = q.w();
-  d[1] = q.x();
-  d[2] = q.y();
-  d[3] = q.z();
-}
-
-Eigen::Vector3d FixTriParticles::angular_momentum(int i) const {
-  const double *L = state_[i] + kAngmom;
-  return {L[0], L[1], L[2]};
-}
-
-void FixTriParticles::set_angular_momentum(int i, const Eigen::Vector3d &L) {
-  double *d = state_[i] + kAngmom;
-  d[0] = L.x();
-  d[1] = L.y();
-  d[2] = L.z();
-}
-
-Eigen::Vector3d FixTriParticles::principal_inertia(int i) const {
-  const tri::Shape &s = shapes_[shape_index(i)];
-  return (atom->rmass[i] / s.volume) * s.inertia_per_density;
 }
 
 /* ---------------- per-atom storage: the LIGGGHTS callbacks ---------------- */
@@ -436,5 +441,7 @@ double FixTriParticles::memory_usage() {
   double bytes = static_cast<double>(atom->nmax) * (kValues + kPending) * sizeof(double);
   for (const tri::TriangleSoA &w : world_)
     bytes += 3.0 * w.x.capacity() * sizeof(double) + sizeof(w);
+  bytes += static_cast<double>(world_stamp_.capacity() * sizeof(long long) +
+                               pending_world_.capacity() * sizeof(int));
   return bytes;
 }

@@ -3,8 +3,8 @@
 // quaternion and the angular momentum, as one LIGGGHTS per-atom array that is grown, copied,
 // migrated, sent to ghosts and written to restarts like any LIGGGHTS property. It sets
 // radius := bounding radius + epsilon (so LIGGGHTS's neighbour lists find every pair whose
-// soft layers can touch) and rmass := density * volume. Each step (pre_force) it rebuilds
-// the world-frame triangles of owned and ghost atoms for the contact styles and the output.
+// soft layers can touch) and rmass := density * volume. World-frame triangles are built on
+// demand, once per force evaluation, for the atoms the contact styles and the output ask for.
 //
 // Shapes are built by shape_builder.h. It owns the contact board (contact_board.h) on which
 // the contact styles publish their tallies, and the run-safety checks (run_safety_monitor.h:
@@ -19,6 +19,7 @@
 // a tag; pre_force initialises them (orientation, mass, radius) once they have one.
 #pragma once
 
+#include "atom.h"
 #include "fix.h"
 
 #include "body_interaction.h"
@@ -44,6 +45,7 @@ public:
   // and a flag that they are pending (see take_restored_force_and_torque). Kept apart from the
   // first, whose row length LIGGGHTS's variables and dumps assume to be kValues.
   static constexpr int kPending = 7;
+  static constexpr int kQuatColumn = 1, kAngmomColumn = 5; // of the first array
 
   FixTriParticles(class LAMMPS *, int, char **);
   ~FixTriParticles() override;
@@ -79,10 +81,28 @@ public:
   int num_shapes() const { return static_cast<int>(shapes_.size()); }
   const tri::Shape &shape(int s) const { return shapes_[s]; }
   int shape_index(int i) const { return static_cast<int>(state_[i][0]); }
-  Eigen::Quaterniond orientation(int i) const;
-  void set_orientation(int i, const Eigen::Quaterniond &q);
-  Eigen::Vector3d angular_momentum(int i) const;
-  void set_angular_momentum(int i, const Eigen::Vector3d &L);
+  // Inline: fix tri/nve calls these for every particle twice a step.
+  Eigen::Quaterniond orientation(int i) const {
+    const double *q = state_[i] + kQuatColumn;
+    return Eigen::Quaterniond(q[0], q[1], q[2], q[3]);
+  }
+  void set_orientation(int i, const Eigen::Quaterniond &q) {
+    double *d = state_[i] + kQuatColumn;
+    d[0] = q.w();
+    d[1] = q.x();
+    d[2] = q.y();
+    d[3] = q.z();
+  }
+  Eigen::Vector3d angular_momentum(int i) const {
+    const double *L = state_[i] + kAngmomColumn;
+    return {L[0], L[1], L[2]};
+  }
+  void set_angular_momentum(int i, const Eigen::Vector3d &L) {
+    double *d = state_[i] + kAngmomColumn;
+    d[0] = L.x();
+    d[1] = L.y();
+    d[2] = L.z();
+  }
   // A continuous run starts step N+1 with the forces of step N, which depend on the half-step
   // velocity v(N - 1/2); a run continued from a restart file can only recompute them from
   // v(N). So the restart file carries the step-N force and torque of each particle, and the
@@ -90,7 +110,10 @@ public:
   // which makes "N steps + restart + N steps" bitwise equal to "2N steps".
   bool take_restored_force_and_torque(int i, double *f, double *torque);
   // Principal moments of atom i, kg m^2, scaled with its rmass (so `set mass` stays consistent).
-  Eigen::Vector3d principal_inertia(int i) const;
+  Eigen::Vector3d principal_inertia(int i) const {
+    const tri::Shape &s = shapes_[shape_index(i)];
+    return (atom->rmass[i] / s.volume) * s.inertia_per_density;
+  }
   double epsilon() const { return epsilon_; }
   // `epsilon auto`: a contact style calls this at its init, after publishing its material on
   // the board, before anything is sized from the radii (material_scales.h). Sets epsilon and
@@ -100,12 +123,18 @@ public:
   tri_liggghts::TypeBodies type_bodies() const;
   // Where the contact styles publish, and their readers read (contact_board.h).
   tri_liggghts::ContactBoard &board() { return board_; }
-  // World-frame triangles of owned and ghost atom i, as of the last pre_force.
+  // World-frame triangles of owned and ghost atom i: valid once ensure_world_triangles (or
+  // update_world_triangles) has included i in this force evaluation.
   const tri::TriangleSoA &world_triangles(int i) const { return world_[i]; }
   // Atom i (owned or ghost) as the contact kernel sees it: its world-frame triangles, soft
   // layer, edge lengths, and x, v, omega, rmass.
   tri::Body body(int i) const;
-  // Recomputes world-frame triangles of atoms [0, n) from x and the quaternions.
+  // World-frame triangles only where needed (issue 12, item 4): each source calls this for the
+  // atoms of its tasks before its engine runs (never inside the parallel loop); an atom's
+  // triangles are computed from x and its quaternion at most once per force evaluation
+  // (pre_force starts a new one). `threads` > 1 shares the atoms among OpenMP threads.
+  void ensure_world_triangles(const int *atoms, int n, int threads = 1);
+  // The same for atoms [0, n).
   void update_world_triangles(int n);
   // Insertion (particle_insertion.h): the rules a template's shape follows, and atom i, just
   // inserted by a template with a shape (no tag yet), is given that shape.
@@ -117,6 +146,10 @@ public:
 private:
   std::vector<tri::Shape> shapes_;
   std::vector<tri::TriangleSoA> world_;
+  std::vector<long long> world_stamp_; // per atom: the evaluation its world_ is of
+  long long evaluation_ = 1;           // force evaluations so far + 1 (pre_force)
+  std::vector<int> pending_world_;     // scratch of ensure_world_triangles
+  void transform_atom(int i);
   double density_ = 0.0, epsilon_ = 0.0;
   bool epsilon_auto_ = false, epsilon_resolved_ = false;
   int check_timestep_every_ = 0; // -1 off, 0 at setup, N: also every N steps

@@ -67,7 +67,8 @@ FixTriWall::FixTriWall(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg) 
     meshes_.push_back(mesh);
   }
 
-  values_per_atom_ = static_cast<int>(meshes_.size()) * tri::kHistoryDoubles;
+  // Per mesh: the tangential history, then (after every mesh's history) the separating axis.
+  values_per_atom_ = static_cast<int>(meshes_.size()) * (tri::kHistoryDoubles + 3);
   restart_peratom = 1;
   scalar_flag = 1;
   extscalar = 0;
@@ -145,7 +146,11 @@ void FixTriWall::collect_tasks() {
     for (int a = 0; a < nlocal; ++a) {
       double *h = history_[a] + m * tri::kHistoryDoubles;
       if (near[a].empty()) {
-        std::fill(h, h + tri::kHistoryDoubles, 0.0);
+        // The history is written compactly (contact_history.h): an empty first slot means an
+        // empty history, so most particles far from the walls cost a read, not a fill.
+        if (tri::slot_occupied(h, 0))
+          std::fill(h, h + tri::kHistoryDoubles, 0.0);
+        std::fill(axis(a, static_cast<int>(m)), axis(a, static_cast<int>(m)) + 3, 0.0);
         continue;
       }
       // Ordered by global triangle id, so the result does not depend on how the mesh is
@@ -209,7 +214,9 @@ tri::PairForceResult FixTriWall::interact(int k, double dt, bool update_history,
                        ? nullptr
                        : history_[a] + task.mesh * tri::kHistoryDoubles;
   tri::HistoryView history(stored, false, update_history);
-  return tri::body_interaction(particle, wall, s, dt, history.data(), scratch, stats);
+  const tri::SeparationCache cache{settings_.separation ? axis(a, task.mesh) : nullptr,
+                                   update_history};
+  return tri::body_interaction(particle, wall, s, dt, history.data(), scratch, stats, cache);
 }
 
 void FixTriWall::compute(bool update_history) {
@@ -218,6 +225,11 @@ void FixTriWall::compute(bool update_history) {
   if (patches_.size() < ntasks_)
     patches_.resize(ntasks_);
   const int nthreads = tri_liggghts::pair_loop_threads(settings_.loop, ntasks_);
+  task_atoms_.clear();
+  for (std::size_t k = 0; k < ntasks_; ++k)
+    task_atoms_.push_back(tasks_[k].atom);
+  particles_->ensure_world_triangles(task_atoms_.data(), static_cast<int>(task_atoms_.size()),
+                                     nthreads);
   const double dt = update->dt;
   engine_.run(ntasks_, nthreads,
               [&](std::size_t k, tri::InteractionScratch &scratch, tri::ContactStats &stats) {
@@ -293,5 +305,6 @@ double FixTriWall::memory_usage() {
     bytes += 3.0 * patch.x.capacity() * sizeof(double);
   for (const Task &task : tasks_)
     bytes += task.triangles.capacity() * sizeof(int);
+  bytes += static_cast<double>(task_atoms_.capacity() * sizeof(int));
   return bytes + static_cast<double>(engine_.bytes());
 }

@@ -16,8 +16,10 @@
 //
 // epsilon: the wall's soft layer (m), default the particles' epsilon. Contact keywords as
 // pair tri/gran (contact_settings.h). f_ID (a global scalar) is the wall-clock time spent in
-// this fix, for a run's time breakdown. The tangential history of each (particle, mesh) pair is
-// a per-atom array of this fix: migrated with the atom and written to restarts.
+// this fix, for a run's time breakdown. The tangential history of each (particle, mesh) pair,
+// and its last proven separating axis (a particle that touches no wall triangle near it costs
+// O(vertices)), are a per-atom array of this fix: migrated with the atom and written to
+// restarts.
 #pragma once
 
 #include "fix.h"
@@ -65,8 +67,13 @@ private:
   tri_liggghts::ContactSettings settings_;
   tri_liggghts::MaterialTable materials_;
   double epsilon_ = -1.0; // < 0: the particles' epsilon
-  double **history_ = nullptr; // per atom: meshes_.size() * kHistoryDoubles
+  double **history_ = nullptr; // per atom: meshes_.size() * (kHistoryDoubles + 3)
   int values_per_atom_ = 0;
+  // The separating axis of (atom a, mesh m), particle towards wall (body_interaction.h).
+  double *axis(int a, int m) {
+    return history_[a] + meshes_.size() * tri::kHistoryDoubles + 3 * static_cast<std::size_t>(m);
+  }
+  std::vector<int> task_atoms_;
   std::vector<Task> tasks_; // the first ntasks_ are this step's
   std::size_t ntasks_ = 0;
   std::vector<std::vector<std::pair<int, int>>> near_;

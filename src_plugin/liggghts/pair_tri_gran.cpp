@@ -29,13 +29,18 @@ void PairTriGran::settings(int narg, char **arg) {
       error->all(FLERR, msg.c_str());
     }
   }
-  if (settings_.interaction.coefficients.tangential == tri::TangentialModel::history &&
-      dnum_pairgran == 0) {
+  if (dnum_pairgran == 0) {
     // One LIGGGHTS history value per double of tri::kHistoryDoubles. Normals and shear
     // displacements change sign when LIGGGHTS swaps the roles of i and j ("1"); see
     // contact_history.h for the slot layout.
-    for (int k = 0; k < tri::kHistoryDoubles; ++k)
-      add_history_value("tri_history_" + std::to_string(k), tri::history_flips_sign(k) ? "1" : "0");
+    if (settings_.interaction.coefficients.tangential == tri::TangentialModel::history)
+      for (int k = 0; k < tri::kHistoryDoubles; ++k)
+        add_history_value("tri_history_" + std::to_string(k),
+                          tri::history_flips_sign(k) ? "1" : "0");
+    // Then the separating axis (from i towards j: it changes sign with the roles).
+    axis_offset_ = dnum_pairgran;
+    for (int k = 0; k < 3; ++k)
+      add_history_value("tri_axis_" + std::to_string(k), "1");
   }
 }
 
@@ -59,7 +64,10 @@ void PairTriGran::collect_tasks() {
   double **first_history = listgranhistory ? listgranhistory->firstdouble : nullptr;
   int **first_touch = listgranhistory ? listgranhistory->firstneigh : nullptr;
   const int dnum = this->dnum();
+  const bool tangential =
+      settings_.interaction.coefficients.tangential == tri::TangentialModel::history;
   tasks_.clear();
+  task_atoms_.clear();
   for (int ii = 0; ii < list->inum; ++ii) {
     const int i = list->ilist[ii];
     const int *jlist = list->firstneigh[i];
@@ -68,16 +76,22 @@ void PairTriGran::collect_tasks() {
       const double dx = atom->x[i][0] - atom->x[j][0], dy = atom->x[i][1] - atom->x[j][1],
                    dz = atom->x[i][2] - atom->x[j][2];
       const double reach = atom->radius[i] + atom->radius[j];
-      double *history = first_history ? &first_history[i][dnum * jj] : nullptr;
+      double *values = first_history ? &first_history[i][dnum * jj] : nullptr;
       int *touching = first_touch ? &first_touch[i][jj] : nullptr;
       if (dx * dx + dy * dy + dz * dz >= reach * reach) {
-        if (history) { // apart: the contact, if there was one, has ended
-          std::fill(history, history + tri::kHistoryDoubles, 0.0);
+        // Apart: the contact, if there was one, has ended; the axis is dropped. Untouched
+        // values are zero already (touching is set wherever one is not: below).
+        if (values && *touching) {
+          std::fill(values, values + dnum_pairgran, 0.0);
           *touching = 0;
         }
         continue;
       }
-      tasks_.push_back({i, j, atom->tag[j] < atom->tag[i], history, touching});
+      double *history = values && tangential ? values : nullptr;
+      double *axis = values && settings_.separation ? values + axis_offset_ : nullptr;
+      tasks_.push_back({i, j, atom->tag[j] < atom->tag[i], history, axis, values, touching});
+      task_atoms_.push_back(i);
+      task_atoms_.push_back(j);
     }
   }
 }
@@ -92,6 +106,8 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
   collect_tasks();
 
   const int nthreads = tri_liggghts::pair_loop_threads(settings_.loop, tasks_.size());
+  particles_->ensure_world_triangles(task_atoms_.data(), static_cast<int>(task_atoms_.size()),
+                                     nthreads);
   engine_.run(tasks_.size(), nthreads,
               [&](std::size_t k, tri::InteractionScratch &scratch, tri::ContactStats &stats) {
                 const Task &task = tasks_[k];
@@ -100,8 +116,19 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
                 s.coefficients = materials_.get(atom->type[a], atom->type[b]);
                 // Stored as seen from (i, j); the kernel sees it from (a, b).
                 tri::HistoryView history(task.history, task.swapped, update_history);
-                return tri::body_interaction(particles_->body(a), particles_->body(b), s, dt,
-                                             history.data(), scratch, stats);
+                const double sign = task.swapped ? -1.0 : 1.0;
+                double axis[3] = {0.0, 0.0, 0.0};
+                if (task.axis)
+                  for (int d = 0; d < 3; ++d)
+                    axis[d] = sign * task.axis[d];
+                tri::SeparationCache cache{task.axis ? axis : nullptr, update_history};
+                const tri::PairForceResult r =
+                    tri::body_interaction(particles_->body(a), particles_->body(b), s, dt,
+                                          history.data(), scratch, stats, cache);
+                if (task.axis && update_history)
+                  for (int d = 0; d < 3; ++d)
+                    task.axis[d] = sign * axis[d];
+                return r;
               });
   if (engine_.failed())
     report_failure();
@@ -112,9 +139,10 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
   for (std::size_t k = 0; k < tasks_.size(); ++k) {
     const Task &t = tasks_[k];
     const tri::PairForceResult &r = engine_.result(k);
-    if (t.touching)
-      *t.touching = std::any_of(t.history, t.history + tri::kHistoryDoubles,
-                                [](double v) { return v != 0.0; });
+    if (t.touching) { // the tangential history or the axis: LIGGGHTS keeps all or nothing
+      const double *values = t.touching_values;
+      *t.touching = std::any_of(values, values + dnum_pairgran, [](double v) { return v != 0.0; });
+    }
     if (r.intersecting && !first.found())
       first = {std::min(tag[t.i], tag[t.j]), std::max(tag[t.i], tag[t.j])};
     if (r.contacts_after == 0)

@@ -14,7 +14,10 @@
 //
 // Built on LIGGGHTS's PairGran, so the tangential history lives in LIGGGHTS's own contact
 // history (fix contacthistory): it survives neighbour-list rebuilds, migration between ranks
-// and restarts. Requires newton_pair off, as every granular history pair style.
+// and restarts. Requires newton_pair off, as every granular history pair style. The same
+// storage keeps each pair's last proven separating axis (body_interaction.h, three values
+// after the tangential ones), so a pair within reach that touches nothing costs O(vertices)
+// per step; the forces do not depend on it.
 //
 // The loop, scratch, error capture and ordered sums are tri::InteractionEngine's (shared with
 // fix tri/wall); this style lists the pairs and says what its two bodies are. It publishes
@@ -58,6 +61,8 @@ private:
     int i, j;
     bool swapped;    // evaluated as (j, i): tag[j] < tag[i]
     double *history; // kHistoryDoubles values in LIGGGHTS's contact history, or null
+    double *axis;    // the pair's separating axis (3 values, as seen from (i, j)), or null
+    double *touching_values; // all of this pair style's history values, or null
     int *touching;   // LIGGGHTS keeps (migrates, restarts) the history only where this is set
   };
   class FixTriParticles *particles_ = nullptr;
@@ -65,7 +70,9 @@ private:
   tri_liggghts::ContactSettings settings_;
   tri_liggghts::MaterialTable materials_;
   std::vector<Task> tasks_;
+  std::vector<int> task_atoms_; // both atoms of every task, for their world-frame triangles
   tri::InteractionEngine engine_;
+  int axis_offset_ = -1; // where the separating axis starts in a pair's history values
 
   void collect_tasks();
   void report_failure();

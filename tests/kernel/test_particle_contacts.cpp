@@ -206,3 +206,45 @@ TEST(ParticleContacts, RejectsBadOptions) {
   opt.batch_size = 0;
   EXPECT_THROW(contacts(s, opt), std::invalid_argument);
 }
+
+// The tight cull (two frames and face planes) only removes pairs farther than the cutoff, and
+// each pair's result does not depend on its neighbours in the list: the contacts of every
+// kernel are bitwise those of the world-box cull (the batched hybrid decides per batch, so
+// there only the pairs and the distances within its tolerance), with fewer pairs tested.
+TEST(ParticleContacts, TightCullGivesTheBoxCullsContactsWithFewerPairs) {
+  std::mt19937_64 rng(62);
+  long long tested_tight = 0, tested_boxes = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    const double eps = uniform(rng, 0.02, 0.1) * 1e-3;
+    const Scene s =
+        make_scene(trial % 2 ? 40 : 20, 4e-3, eps, uniform(rng, -1.5, 2.5) * eps, 900 + trial);
+    for (auto kernel :
+         {DistanceKernel::BruteForce, DistanceKernel::Hybrid, DistanceKernel::BatchedHybrid}) {
+      ContactOptions opt;
+      opt.kernel = kernel;
+      opt.tight_cull = false;
+      ContactStats boxes_stats, tight_stats;
+      const auto boxes = contacts(s, opt, &boxes_stats);
+      opt.tight_cull = true;
+      const auto tight = contacts(s, opt, &tight_stats);
+      if (kernel == DistanceKernel::BatchedHybrid) {
+        expect_same_pairs(boxes, tight, 1e-4 * s.eps, s.name);
+      } else {
+        ASSERT_EQ(boxes.size(), tight.size()) << s.name;
+        for (std::size_t k = 0; k < boxes.size(); ++k) {
+          ASSERT_EQ(boxes[k].tri_a, tight[k].tri_a) << s.name;
+          ASSERT_EQ(boxes[k].tri_b, tight[k].tri_b) << s.name;
+          ASSERT_EQ(boxes[k].distance, tight[k].distance) << s.name;
+          ASSERT_EQ(boxes[k].point_a, tight[k].point_a) << s.name;
+          ASSERT_EQ(boxes[k].normal, tight[k].normal) << s.name;
+        }
+      }
+      ASSERT_LE(tight_stats.triangle_pairs_tested, boxes_stats.triangle_pairs_tested) << s.name;
+      tested_tight += tight_stats.triangle_pairs_tested;
+      tested_boxes += boxes_stats.triangle_pairs_tested;
+      const int na = s.a.num_triangles(), nb = s.b.num_triangles();
+      EXPECT_EQ(tight_stats.triangle_pairs_tested + tight_stats.triangle_pairs_culled, na * nb);
+    }
+  }
+  EXPECT_LT(tested_tight, 0.85 * tested_boxes);
+}

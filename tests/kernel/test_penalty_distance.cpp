@@ -95,3 +95,38 @@ TEST(PenaltyDistance, UnsupportedIterationCountThrows) {
   EXPECT_TRUE(penalty_iterations_supported(4));
   EXPECT_THROW(penalty_block(9, block, PenaltyParameters{}, 0.0, r), std::invalid_argument);
 }
+
+// A block that uses at most half its lanes runs only those: each lane's penalty and brute-force
+// result is the same bits as in a full block.
+TEST(PenaltyDistance, HalfBlocksGiveTheFullBlocksBits) {
+  std::vector<TriangleCase> cases = random_cases(400, 1.0, 5);
+  for (double scale : {1e-6, 1e3})
+    for (const TriangleCase &c : adversarial_cases(scale, 7))
+      cases.push_back(c);
+  for (const TriangleCase &c : crossing_cases())
+    cases.push_back(c);
+  for (std::size_t first = 0; first + kPairLanes <= cases.size(); first += kPairLanes) {
+    TrianglePairBlock block;
+    for (int l = 0; l < kPairLanes; ++l)
+      block.set_lane(l, cases[first + l].a, cases[first + l].b);
+    const double tol = 1e-9 * cases[first].a[0].norm();
+    PenaltyBlockResult full, half;
+    penalty_block(4, block, PenaltyParameters{}, tol, full);
+    penalty_block(4, block, PenaltyParameters{}, tol, half, kPairLanes / 2);
+    TrianglePairDistance bf_full[kPairLanes], bf_half[kPairLanes];
+    brute_force_block(block, kPairLanes, bf_full);
+    brute_force_block(block, kPairLanes / 2, bf_half);
+    for (int l = 0; l < kPairLanes / 2; ++l) {
+      ASSERT_EQ(full.upper[l], half.upper[l]) << "case " << first + l;
+      ASSERT_EQ(full.lower[l], half.lower[l]) << "case " << first + l;
+      ASSERT_EQ(full.converged_at[l], half.converged_at[l]) << "case " << first + l;
+      for (int k = 0; k < 3; ++k) {
+        ASSERT_EQ(full.point_a[k][l], half.point_a[k][l]) << "case " << first + l;
+        ASSERT_EQ(full.point_b[k][l], half.point_b[k][l]) << "case " << first + l;
+      }
+      ASSERT_EQ(bf_full[l].distance, bf_half[l].distance) << "case " << first + l;
+      ASSERT_EQ(bf_full[l].point_a, bf_half[l].point_a) << "case " << first + l;
+      ASSERT_EQ(bf_full[l].normal, bf_half[l].normal) << "case " << first + l;
+    }
+  }
+}

@@ -139,3 +139,97 @@ TEST(TriangleBoxes, WholeBoxContainsTriangleBoxesAndEmptySetCullsAll) {
   EXPECT_EQ(cull_triangle_pairs(boxes, none, 1.0, scratch, pairs), 0);
   EXPECT_EQ(cull_triangle_pairs(none, boxes, 1.0, scratch, pairs), 0);
 }
+
+// The two-frame cull (world boxes and boxes in a rotated frame) and the separating-axis filter
+// keep every pair closer than the margin, keep only pairs the world cull keeps, in its order,
+// and remove more than it does.
+TEST(TriangleBoxes, TwoFrameCullAndSeparatingAxesKeepEveryPairWithinTheMargin) {
+  long long close_pairs = 0, world_kept = 0, tight_kept = 0;
+  CullScratch scratch, scratch2;
+  for (int seed = 0; seed < 200; ++seed) {
+    std::mt19937_64 rng(9100 + seed);
+    const TriangleSoA a = to_soa(tri_test::test_particle(6 + 2 * (seed % 18), 1.0, 500 + seed));
+    const TriangleSoA body = to_soa(tri_test::test_particle(
+        6 + 2 * ((seed * 5) % 20), tri_test::uniform(rng, 0.3, 2.0), 1500 + seed));
+    const int na = a.num_triangles(), nb = body.num_triangles();
+    TriangleSoA b;
+    const double reach = tri_test::uniform(rng, 0.3, 1.5);
+    const Eigen::Vector3d shift(tri_test::uniform(rng, -reach, reach),
+                                tri_test::uniform(rng, -reach, reach),
+                                tri_test::uniform(rng, -reach, reach));
+    transform_soa(body, tri_test::random_rotation(rng), shift, b);
+    const double margin = tri_test::uniform(rng, 0.0, 0.2);
+    const Eigen::Matrix3d frame = tri_test::random_rotation(rng);
+    TriangleSoA fa, fb;
+    transform_soa(a, frame, Eigen::Vector3d::Zero(), fa);
+    transform_soa(b, frame, Eigen::Vector3d::Zero(), fb);
+    TriangleBoxes ba, bb, bfa, bfb;
+    compute_triangle_boxes(a, ba);
+    compute_triangle_boxes(b, bb);
+    compute_triangle_boxes(fa, bfa);
+    compute_triangle_boxes(fb, bfb);
+    std::vector<TrianglePairIndex> world, tight;
+    const int nw = cull_triangle_pairs(ba, bb, margin, scratch, world);
+    const double frame_margin = margin * (1 + 1e-9) + 1e-12;
+    int nt =
+        cull_triangle_pairs_two_frames(ba, bb, bfa, bfb, margin, frame_margin, scratch2, tight);
+    nt = separating_axis_filter(a, b, frame_margin, tight.data(), nt);
+    // A subsequence of the world cull's list.
+    int w = 0;
+    for (int k = 0; k < nt; ++k) {
+      while (w < nw && !(world[w].a == tight[k].a && world[w].b == tight[k].b))
+        ++w;
+      ASSERT_LT(w, nw) << "seed " << seed << ": pair " << tight[k].a << "," << tight[k].b
+                       << " is not kept by the world cull, or out of order";
+    }
+    std::vector<std::uint8_t> kept(static_cast<std::size_t>(na) * nb, 0);
+    for (int k = 0; k < nt; ++k)
+      kept[static_cast<std::size_t>(tight[k].a) * nb + tight[k].b] = 1;
+    for (int i = 0; i < na; ++i)
+      for (int j = 0; j < nb; ++j) {
+        TrianglePairIndex p{i, j};
+        TrianglePairDistance d;
+        brute_force_scalar_distances(a, b, &p, 1, &d);
+        if (d.distance < margin) {
+          ++close_pairs;
+          ASSERT_TRUE(kept[static_cast<std::size_t>(i) * nb + j])
+              << "seed " << seed << " pair " << i << "," << j << " at " << d.distance;
+        }
+      }
+    world_kept += nw;
+    tight_kept += nt;
+  }
+  EXPECT_GT(close_pairs, 1000);
+  EXPECT_LT(tight_kept, world_kept * 0.8);
+}
+
+// The separating-axis filter on hand-made pairs: parallel faces a little more or less than
+// the margin apart, crossed edges apart along their common normal only, a degenerate triangle
+// (a segment), and a pair that intersects.
+TEST(TriangleBoxes, SeparatingAxesOnHandMadePairs) {
+  auto tri = [](Eigen::Vector3d p, Eigen::Vector3d q, Eigen::Vector3d r) {
+    TriangleSoA t;
+    t.resize(1);
+    t.set_vertex(0, 0, p);
+    t.set_vertex(0, 1, q);
+    t.set_vertex(0, 2, r);
+    return t;
+  };
+  using V = Eigen::Vector3d;
+  const TriangleSoA floor = tri(V(0, 0, 0), V(1, 0, 0), V(0, 1, 0));
+  auto kept = [](const TriangleSoA &a, const TriangleSoA &b, double margin) {
+    TrianglePairIndex p{0, 0};
+    return separating_axis_filter(a, b, margin, &p, 1);
+  };
+  for (double h : {0.099, 0.101}) // parallel, h above: apart beyond 0.1 only
+    EXPECT_EQ(kept(floor, tri(V(0, 0, h), V(1, 0, h), V(0, 1, h)), 0.1), h < 0.1 ? 1 : 0);
+  // Two edges crossing at right angles, 0.2 apart along z: only the edge-edge axis sees it
+  // (each triangle is vertical, so neither face normal is z).
+  const TriangleSoA xs = tri(V(-1, 0, 0), V(1, 0, 0), V(0, 0, -1));
+  const TriangleSoA ys = tri(V(0, -1, 0.2), V(0, 1, 0.2), V(0, 0, 1.2));
+  EXPECT_EQ(kept(xs, ys, 0.19), 0);
+  EXPECT_EQ(kept(xs, ys, 0.21), 1);
+  const TriangleSoA segment = tri(V(0, 0, -5), V(0, 0, 0), V(0, 0, 5)); // no normal
+  EXPECT_EQ(kept(segment, floor, 0.1), 1);                              // it crosses the floor
+  EXPECT_EQ(kept(tri(V(0.2, 0.2, -1), V(0.3, 0.2, 1), V(0.2, 0.3, 1)), floor, 0.0), 1);
+}

@@ -1,0 +1,274 @@
+// Separating axes (separating_axis.h) and the kept axis of body_interaction.h: the proven gap
+// is never more than any triangle-pair distance, at scales 1e-6 to 1e3 and far from the origin;
+// and over moving, rotating particle pairs and particle-wall pairs, step after step, a kept
+// axis and the tight cull change nothing: the same contacts as brute force, and bitwise the
+// same forces, torques and history as the search without either.
+#include "body_interaction.h"
+#include "random_rock.h"
+#include "separating_axis.h"
+#include "shape.h"
+#include "test_particles.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+using namespace tri;
+using namespace tri_test;
+using Eigen::Vector3d;
+
+namespace {
+
+Shape rock(int ntri, std::uint64_t seed, double size = 0.004) {
+  RockParameters p;
+  p.ntri = ntri;
+  p.size = size;
+  p.seed = seed;
+  p.aspect_middle = 0.8;
+  p.aspect_short = 0.6;
+  return make_shape("rock", random_rock(p));
+}
+
+std::vector<TriangleContact> brute_force_contacts(const TriangleSoA &a, double ea,
+                                                  const TriangleSoA &b, double eb) {
+  ContactOptions opt;
+  opt.kernel = DistanceKernel::BruteForceScalar;
+  opt.cull = false;
+  std::vector<TriangleContact> out;
+  ContactStats stats;
+  find_triangle_contacts(a, ea, b, eb, opt, out, stats);
+  return out;
+}
+
+InteractionSettings settings(bool tight) {
+  InteractionSettings s;
+  s.distance.tight_cull = tight;
+  s.coefficients.kn = 2000;
+  s.coefficients.kt = 1000;
+  s.coefficients.gamman = 20;
+  s.coefficients.gammat = 10;
+  s.coefficients.mu = 0.5;
+  s.coefficients.limit_force = true;
+  return s;
+}
+
+void expect_bitwise(const PairForceResult &ref, const PairForceResult &got,
+                    const std::string &what) {
+  ASSERT_EQ(ref.force_a, got.force_a) << what;
+  ASSERT_EQ(ref.torque_a, got.torque_a) << what;
+  ASSERT_EQ(ref.torque_b, got.torque_b) << what;
+  ASSERT_EQ(ref.contacts_before, got.contacts_before) << what;
+  ASSERT_EQ(ref.contacts_after, got.contacts_after) << what;
+  ASSERT_EQ(ref.max_overlap, got.max_overlap) << what;
+  ASSERT_EQ(ref.min_distance, got.min_distance) << what;
+  ASSERT_EQ(ref.intersecting, got.intersecting) << what;
+}
+
+} // namespace
+
+TEST(SeparatingAxis, ProvenGapNeverExceedsATrianglePairDistance) {
+  std::mt19937_64 rng(12);
+  int separated = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    const double scale = std::pow(10.0, uniform(rng, -6, 3));
+    const Vector3d far(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1));
+    const Vector3d origin = far * scale * uniform(rng, 0, 1000); // far from the origin too
+    TriangleSoA a, b, body;
+    transform_soa(to_soa(test_particle(20, scale, 40 + trial)), random_rotation(rng), origin, a);
+    transform_soa(to_soa(test_particle(20, scale, 90 + trial)), random_rotation(rng), origin, body);
+    const Vector3d dir(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1));
+    b = place_at_gap(a, body, dir, uniform(rng, 0.01, 0.3) * scale);
+    const double distance = particle_distance(a, b);
+    for (int k = 0; k < 20; ++k) {
+      Vector3d axis =
+          k == 0 ? dir : Vector3d(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1));
+      axis = axis.normalized() * std::pow(10.0, uniform(rng, -3, 3)); // not unit
+      const double gap = proven_gap(a, b, axis, 0.0);
+      ASSERT_LE(gap, distance) << "trial " << trial << " scale " << scale;
+      separated += gap > 0.0;
+    }
+  }
+  EXPECT_GT(separated, 30); // the axes along the placement direction do prove a gap
+}
+
+TEST(SeparatingAxis, UnusableAxesProveNothing) {
+  const TriangleSoA a = to_soa(test_particle(20, 1.0, 1));
+  TriangleSoA b;
+  transform_soa(a, Eigen::Matrix3d::Identity(), Vector3d(10, 0, 0), b);
+  EXPECT_TRUE(separated_along(a, b, Vector3d(1, 0, 0), 1.0));
+  EXPECT_FALSE(separated_along(a, b, Vector3d(-1, 0, 0), 1.0)); // the wrong way round
+  EXPECT_FALSE(separated_along(a, b, Vector3d::Zero(), 1.0));
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_FALSE(separated_along(a, b, Vector3d(nan, 0, 0), 1.0));
+  EXPECT_FALSE(separated_along(a, TriangleSoA{}, Vector3d(1, 0, 0), 1.0));
+  EXPECT_FALSE(separated_along(a, b, Vector3d(1, 0, 0), 100.0)); // gap below the cutoff
+}
+
+// Two rocks on a trajectory that brings them from apart into contact (also intersecting)
+// and out again, both spinning fast, over many steps: with the kept axis and the tight cull
+// (the default) every step gives bitwise the result of the plain box-culled search, and the
+// contacts the search finds are brute force's.
+TEST(SeparatingAxis, KeptAxisAndTightCullChangeNothingOnMovingRotatingPairs) {
+  const double eps = 1e-4, dt = 1e-5;
+  long long separated = 0, touching = 0, searched = 0;
+  for (int pair = 0; pair < 4; ++pair) {
+    const Shape sa = rock(pair % 2 ? 40 : 20, 11 + pair), sb = rock(pair / 2 ? 40 : 20, 21 + pair);
+    std::mt19937_64 rng(300 + pair);
+    const Vector3d axis_a = Vector3d(uniform(rng, -1, 1), uniform(rng, -1, 1), 1).normalized();
+    const Vector3d axis_b = Vector3d(1, uniform(rng, -1, 1), uniform(rng, -1, 1)).normalized();
+    const Vector3d dir =
+        Vector3d(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)).normalized();
+    const Vector3d side = dir.unitOrthogonal();
+    double h_ref[kHistoryDoubles] = {}, h_got[kHistoryDoubles] = {}, cache[3] = {0, 0, 0};
+    InteractionScratch scratch_ref, scratch_got;
+    TriangleSoA wa, wb;
+    const int steps = 500;
+    for (int step = 0; step < steps; ++step) {
+      const double t = double(step) / steps;
+      // centre distance 5.0 -> 2.4 -> 5.0 mm (bounding diameter 4 mm), with a sideways sweep
+      const double d = 0.0024 + 0.0026 * std::abs(std::cos(M_PI * t));
+      const Vector3d xa(0.01, -0.02, 0.03), xb = xa + d * dir + 0.0008 * std::sin(5 * t) * side;
+      const Eigen::Matrix3d ra = Eigen::AngleAxisd(6.0 * t, axis_a).toRotationMatrix();
+      const Eigen::Matrix3d rb = Eigen::AngleAxisd(-9.0 * t, axis_b).toRotationMatrix();
+      transform_soa(sa.soa, ra, xa, wa);
+      transform_soa(sb.soa, rb, xb, wb);
+      Body a, b;
+      a.triangles = &wa;
+      b.triangles = &wb;
+      for (Body *p : {&a, &b}) {
+        p->epsilon = eps;
+        p->state.mass = 1e-4;
+      }
+      a.longest_edge = sa.max_edge_length;
+      a.min_edge = sa.min_edge_length;
+      b.longest_edge = sb.max_edge_length;
+      b.min_edge = sb.min_edge_length;
+      a.state.x = xa;
+      b.state.x = xb;
+      a.state.omega = 6.0 * axis_a;
+      b.state.omega = -9.0 * axis_b;
+      b.state.v = -0.38 * dir;
+      ContactStats st_ref, st_got;
+      const PairForceResult ref =
+          body_interaction(a, b, settings(false), dt, h_ref, scratch_ref, st_ref);
+      const PairForceResult got = body_interaction(a, b, settings(true), dt, h_got, scratch_got,
+                                                   st_got, SeparationCache{cache, true});
+      const std::string what = "pair " + std::to_string(pair) + " step " + std::to_string(step);
+      expect_bitwise(ref, got, what);
+      for (int k = 0; k < kHistoryDoubles; ++k)
+        ASSERT_EQ(h_ref[k], h_got[k]) << what;
+      separated += st_got.bodies_separated;
+      touching += ref.contacts_after > 0;
+      if (st_got.bodies_separated == 0) {
+        ++searched;
+        // The search's triangle contacts are exactly brute force's pairs.
+        const auto bf = brute_force_contacts(wa, eps, wb, eps);
+        ASSERT_EQ(bf.size(), scratch_got.triangle_contacts.size()) << what;
+        for (std::size_t k = 0; k < bf.size(); ++k) {
+          ASSERT_EQ(bf[k].tri_a, scratch_got.triangle_contacts[k].tri_a) << what;
+          ASSERT_EQ(bf[k].tri_b, scratch_got.triangle_contacts[k].tri_b) << what;
+        }
+        ASSERT_LE(st_got.triangle_pairs_tested, st_ref.triangle_pairs_tested) << what;
+      } else {
+        ASSERT_EQ(ref.contacts_after, 0) << what;
+        ASSERT_TRUE(brute_force_contacts(wa, eps, wb, eps).empty()) << what;
+      }
+    }
+  }
+  EXPECT_GT(separated, 1000); // the kept axis does the work where the rocks are apart ...
+  EXPECT_GT(touching, 100);   // ... and the trajectories do touch
+  EXPECT_GT(searched, 150);
+}
+
+// A spinning rock bouncing on a patch of wall triangles, body b of infinite mass: a floor of
+// four triangles, one of them sloping down (an axis is kept), and a floor with a side wall that
+// the rock also hits (no single axis separates it from that patch: the planes of the wall
+// triangles prove it apart instead). Neither changes anything.
+TEST(SeparatingAxis, KeptAxisAndWallPlanesChangeNothingAgainstAWallPatch) {
+  for (int corner = 0; corner < 2; ++corner) {
+    const double eps = 1e-4, dt = 1e-5;
+    const Shape s = rock(40, 5);
+    TriangleSoA patch;
+    patch.resize(4);
+    const double up = corner ? 0.01 : -0.005, out = corner ? 0.01 : 0.02;
+    const Vector3d p[6] = {{-0.01, -0.01, 0}, {0.01, -0.01, 0}, {0.01, 0.01, 0},
+                           {-0.01, 0.01, 0},  {out, -0.01, up}, {out, 0.01, up}};
+    const int tris[4][3] = {{0, 1, 2}, {0, 2, 3}, {1, 4, 5}, {1, 5, 2}};
+    for (int t = 0; t < 4; ++t)
+      for (int k = 0; k < 3; ++k)
+        patch.set_vertex(t, k, p[tris[t][k]] + Vector3d(0.5, 0.5, 0.5));
+    long long separated = 0, touching = 0;
+    double h_ref[kHistoryDoubles] = {}, h_got[kHistoryDoubles] = {}, cache[3] = {0, 0, 0};
+    InteractionScratch scratch_ref, scratch_got;
+    TriangleSoA w;
+    for (int step = 0; step < 400; ++step) {
+      const double t = step / 400.0;
+      const Vector3d x =
+          Vector3d(0.5 + 0.0085 * t, 0.5, 0.5 + 0.0008 + 0.003 * std::abs(std::cos(3 * M_PI * t)));
+      transform_soa(s.soa,
+                    Eigen::AngleAxisd(7.0 * t, Vector3d(1, 2, 3).normalized()).toRotationMatrix(),
+                    x, w);
+      Body a, b;
+      a.triangles = &w;
+      a.epsilon = eps;
+      a.longest_edge = s.max_edge_length;
+      a.min_edge = s.min_edge_length;
+      a.state.x = x;
+      a.state.mass = 1e-4;
+      a.state.v = Vector3d(0.6, 0, -0.3);
+      b.triangles = &patch;
+      b.epsilon = eps;
+      b.longest_edge = std::numeric_limits<double>::infinity();
+      b.min_edge = s.min_edge_length;
+      b.state.x = Vector3d(0.5, 0.5, 0.5);
+      b.state.mass = 0.0;
+      ContactStats st_ref, st_got;
+      const PairForceResult ref =
+          body_interaction(a, b, settings(false), dt, h_ref, scratch_ref, st_ref);
+      const PairForceResult got = body_interaction(a, b, settings(true), dt, h_got, scratch_got,
+                                                   st_got, SeparationCache{cache, true});
+      const std::string what = "corner " + std::to_string(corner) + " step " + std::to_string(step);
+      expect_bitwise(ref, got, what);
+      for (int k = 0; k < kHistoryDoubles; ++k)
+        ASSERT_EQ(h_ref[k], h_got[k]) << what;
+      separated += st_got.bodies_separated;
+      touching += ref.contacts_after > 0;
+    }
+    EXPECT_GT(separated, 100) << "corner " << corner;
+    EXPECT_GT(touching, 50) << "corner " << corner;
+  }
+}
+
+// A read-only cache (LIGGGHTS's setup) is used but never written.
+TEST(SeparatingAxis, ReadOnlyCacheIsNotWritten) {
+  const Shape s = rock(20, 3);
+  TriangleSoA wa, wb;
+  transform_soa(s.soa, Eigen::Matrix3d::Identity(), Vector3d::Zero(), wa);
+  transform_soa(s.soa, Eigen::Matrix3d::Identity(), Vector3d(0.0045, 0, 0), wb);
+  Body a, b;
+  a.triangles = &wa;
+  b.triangles = &wb;
+  for (Body *p : {&a, &b}) {
+    p->epsilon = 1e-4;
+    p->state.mass = 1e-4;
+    p->longest_edge = s.max_edge_length;
+    p->min_edge = s.min_edge_length;
+  }
+  b.state.x = Vector3d(0.0045, 0, 0);
+  InteractionScratch scratch;
+  ContactStats stats;
+  double cache[3] = {0, 0, 0};
+  body_interaction(a, b, settings(true), 1e-5, nullptr, scratch, stats,
+                   SeparationCache{cache, false});
+  EXPECT_EQ(Vector3d(cache), Vector3d::Zero());
+  body_interaction(a, b, settings(true), 1e-5, nullptr, scratch, stats,
+                   SeparationCache{cache, true});
+  EXPECT_GT(Vector3d(cache).norm(), 0.99); // apart: an axis is kept
+  EXPECT_EQ(stats.bodies_separated, 0);
+  body_interaction(a, b, settings(true), 1e-5, nullptr, scratch, stats,
+                   SeparationCache{cache, true});
+  EXPECT_EQ(stats.bodies_separated, 1); // and used
+}

@@ -1,0 +1,405 @@
+#!/usr/bin/env python3
+"""The pile benchmark (issue 12): mesh particles against LIGGGHTS spheres of equal mass, where
+granular material spends its time. A program, not a test.
+
+n^3 spinning rocks (20 or 40 triangles, in.pile) fall from a lattice into an open box and
+settle into a pile on its mesh floor; the sphere twin (in.pile_spheres, plain liggghts) does
+the same with spheres of the rocks' mean volume. For each configuration the script runs the
+spheres and the rocks back to back, phase by phase, and prints ms per step and the ratio:
+
+  free     --free-steps steps from the lattice without gravity (free flight: the spinning
+           particles never touch; the hopper: its first steps of free fall)
+  forming  --steps steps from a restart at t = 0.06 s (the lower layers have landed, the upper
+           ones are landing)
+  settled  --steps steps from a restart at t = 0.3 s (the settled pile)
+
+The restart files are written once per binary (--prepare, or whenever missing: one run of the
+whole settling per configuration, minutes) under --work, so a measured phase is short. For the
+rocks it also prints the counters of compute tri/stats per step (averaged over the measured
+steps, columns by name from tri-stats-columns): pairs checked / in contact, triangle pairs
+tested / within the layers, fallbacks.
+
+  /usr/bin/python3 validation/performance/pile/run_pile.py [--n 8] [--ntri 20 40] [--steps 300]
+      [--repeat 2] [--threads 1 2] [--ranks 1 2] [--phases free forming settled]
+      [--tri build/src_plugin/driver/liggghts-tri] [--liggghts /usr/bin/liggghts]
+      [--work /tmp/pile_bench] [--label NAME] [--prepare]
+  /usr/bin/python3 validation/performance/pile/run_pile.py --plot pile.png --label main --label speed
+
+Every run is checked (exit status 0, no ERROR, no lost atoms, no nan). Results are appended to
+WORK/results_LABEL.json; --plot draws the PNG of one or more labels (Debian's matplotlib).
+Standard library only otherwise.
+"""
+import argparse
+import json
+import os
+import platform
+import re
+import resource
+import shlex
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.abspath(os.path.join(HERE, "..", "..", ".."))
+DT = 2e-5
+T_FORM, T_SETTLE = 0.06, 0.3  # the pile: forming, settled
+T_HOPPER = 0.2  # the hopper: the pile has formed in the funnel (the issue's measurement)
+HOPPER = os.path.join(REPO, "examples", "hopper")
+COUNTERS = ["pairs_checked", "pairs_in_contact", "triangle_pairs_tested", "contacts_before",
+            "triangle_contacts", "fallbacks"]
+DECK_KEYS = ["k_checked", "k_incontact", "k_tested", "k_before", "k_tricontacts", "k_fallbacks"]
+MPI_ENV = {"OMPI_ALLOW_RUN_AS_ROOT": "1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM": "1"}
+
+
+def sh(cmd):
+    try:
+        return subprocess.run(cmd, shell=True, capture_output=True, text=True).stdout.strip()
+    except OSError:
+        return ""
+
+
+def loadavg():
+    return list(os.getloadavg())
+
+
+def machine():
+    model = "?"
+    for line in sh("lscpu").splitlines():
+        if line.startswith("Model name:"):
+            model = line.split(":", 1)[1].strip()
+    return {"host": platform.node(), "cpu": model, "cores": os.cpu_count(),
+            "compiler": (sh("g++ --version").splitlines() or ["?"])[0],
+            "mpirun": (sh("mpirun --version").splitlines() or ["?"])[0]}
+
+
+def stats_columns(tri):
+    """name -> 1-based column of compute tri/stats, from tri-stats-columns beside the driver."""
+    tool = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(tri))), "tools",
+                        "tri-stats-columns")
+    out = subprocess.run([tool], capture_output=True, text=True, check=True).stdout
+    cols = {}
+    for line in out.splitlines():
+        f = line.split("\t")
+        if len(f) >= 2 and f[0].strip().isdigit():
+            cols[f[1].strip()] = int(f[0])
+    missing = [c for c in COUNTERS if c not in cols]
+    if missing:
+        sys.exit(f"{tool} has no column {missing}")
+    return cols
+
+
+def parse(text):
+    r = {}
+    m = re.search(r"Loop time of ([\d.eE+-]+) on (\d+) procs for (\d+) steps with (\d+) atoms", text)
+    if m:
+        r["loop"], r["procs"], r["steps"], r["atoms"] = float(m[1]), int(m[2]), int(m[3]), int(m[4])
+    for key, name in (("Pair", "pair"), ("Neigh", "neigh"), ("Comm", "comm"), ("Other", "other")):
+        m = re.search(key + r"\s+time \(%\) = ([\d.eE+-]+)", text)
+        if m:
+            r[name] = float(m[1])
+    m = re.search(r"pile timing: fix tri/wall ([\d.eE+-]+) s", text)
+    if m:
+        r["wall"] = float(m[1])
+    r["bad"] = [w for w, pat in (("ERROR", r"^ERROR"), ("lost atoms", r"Lost atoms"),
+                                 ("nan", r"\b(nan|-nan|inf)\b")) if re.search(pat, text, re.M | re.I)]
+    return r
+
+
+def read_counters(path):
+    rows = [l.split() for l in open(path) if l.strip() and not l.startswith("#")]
+    return dict(zip(COUNTERS, [float(v) for v in rows[-1][1:]]))
+
+
+class Bench:
+    def __init__(self, a):
+        self.a = a
+        os.makedirs(a.work, exist_ok=True)
+        self.cols = stats_columns(a.tri)
+        self.results_path = os.path.join(a.work, f"results_{a.label}.json")
+        self.results = json.load(open(self.results_path)) if os.path.exists(self.results_path) else []
+        self.prepared = set()
+        self.setup_cpu = {}
+
+    def command(self, kind, n, ntri, mode, ranks, out, restart=None, steps=None, phase=None):
+        a = self.a
+        stem = "in.pile" if a.geometry == "pile" else "in.hopper_phase"
+        deck = os.path.join(HERE, stem if kind == "rocks" else stem + "_spheres")
+        exe = a.tri if kind == "rocks" else a.liggghts
+        var = {"dir": HERE if a.geometry == "pile" else HOPPER, "n": n, "ntri": ntri, "mode": mode,
+               "out": out, "px": ranks}
+        if steps:
+            var["steps"] = steps
+        if phase == "free" and a.geometry == "pile":
+            var["g"] = 0  # the spinning lattice floats: free flight for as many steps as asked
+        if restart:
+            var["restart"] = restart
+        if mode == "settle":
+            var.update({"tform": T_FORM, "tsettle": T_SETTLE, "every": 2500} if a.geometry == "pile"
+                       else {"tform": T_HOPPER, "every": 2500})
+        if kind == "rocks":
+            for key, name in zip(DECK_KEYS, COUNTERS):
+                var[key] = self.cols[name]
+        cmd = (["mpirun", "-np", str(ranks)] if ranks > 1 else []) + [exe, "-in", deck, "-log", "none"]
+        for k, v in var.items():
+            cmd += ["-var", k, str(v)]
+        return cmd
+
+    def run(self, cmd, cwd, threads, timeout):
+        env = dict(os.environ, OMP_NUM_THREADS=str(threads), **MPI_ENV)
+        before = resource.getrusage(resource.RUSAGE_CHILDREN)
+        with open(os.path.join(cwd, "screen.txt"), "w") as f:
+            p = subprocess.run(cmd, cwd=cwd, env=env, stdout=f, stderr=subprocess.STDOUT,
+                               timeout=timeout)
+        after = resource.getrusage(resource.RUSAGE_CHILDREN)
+        text = open(os.path.join(cwd, "screen.txt"), errors="replace").read()
+        r = parse(text)
+        r["cpu"] = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+        if p.returncode != 0 or r["bad"] or "loop" not in r:
+            sys.exit(f"run failed ({p.returncode}, {r['bad']}): {shlex.join(cmd)}\n"
+                     f"see {cwd}/screen.txt:\n{text[-1500:]}")
+        return r
+
+    def restarts(self, kind, n, ntri):
+        """The folder holding forming.restart and settled.restart of (kind, n, ntri)."""
+        d = os.path.join(self.a.work, f"restart_{self.a.label}", f"{self.a.geometry}_{kind}_n{n}_t{ntri}")
+        last = "settled.restart" if self.a.geometry == "pile" else "formed.restart"
+        if (self.a.prepare and d not in self.prepared) or not os.path.exists(os.path.join(d, last)):
+            self.prepared.add(d)
+            os.makedirs(d, exist_ok=True)
+            cmd = self.command(kind, n, ntri, "settle", 1, d)
+            print(f"  settling {kind} n={n} ntri={ntri}: {shlex.join(cmd)}", flush=True)
+            t0 = time.time()
+            self.run(cmd, d, 1, self.a.settle_timeout)
+            print(f"  settled in {time.time() - t0:.0f} s", flush=True)
+        return d
+
+    def measure(self, kind, n, ntri, phase, threads, ranks, rep):
+        a = self.a
+        out = os.path.join(a.work, "runs", f"{a.label}_{a.geometry}_{kind}_n{n}_t{ntri}_{phase}_{threads}x{ranks}_{rep}")
+        os.makedirs(out, exist_ok=True)
+        restart = None
+        if phase != "free":
+            restart = os.path.join(self.restarts(kind, n, ntri), phase + ".restart")
+        mode = "free" if phase == "free" else "restart"
+        # CPU time of the process(es) per step: the run's minus that of a 1-step run (start-up,
+        # reading, setup), which a loaded machine distorts less than the wall-clock loop time.
+        key = (kind, n, ntri, phase, threads, ranks)
+        if key not in self.setup_cpu:
+            setup_dir = out + "_setup"
+            os.makedirs(setup_dir, exist_ok=True)
+            self.setup_cpu[key] = self.run(self.command(kind, n, ntri, mode, ranks, setup_dir,
+                                                        restart, 1, phase), setup_dir, threads,
+                                           a.run_timeout)["cpu"]
+        steps = a.free_steps if phase == "free" else a.steps
+        if kind == "spheres":  # cheap: more steps, so that their CPU time is well above the noise
+            steps *= a.sphere_factor
+        cmd = self.command(kind, n, ntri, mode, ranks, out, restart, steps, phase)
+        before = loadavg()
+        r = self.run(cmd, out, threads, a.run_timeout)
+        r["cpu_ms_per_step"] = 1000.0 * (r["cpu"] - self.setup_cpu[key]) / (r["steps"] - 1)
+        r.update({"kind": kind, "geometry": a.geometry, "n": n, "ntri": ntri, "phase": phase,
+                  "threads": threads,
+                  "ranks": ranks, "rep": rep, "load_before": before, "load_after": loadavg(),
+                  "command": ("OMP_NUM_THREADS=%d " % threads) + shlex.join(cmd),
+                  "ms_per_step": 1000.0 * r["loop"] / r["steps"], "label": a.label,
+                  "time": time.strftime("%Y-%m-%d %H:%M:%S")})
+        if kind == "rocks":
+            r["counters"] = read_counters(os.path.join(out, "counters.txt"))
+        self.results.append(r)
+        json.dump(self.results, open(self.results_path, "w"), indent=1)
+        return r
+
+    def go(self):
+        a = self.a
+        m = machine()
+        print(f"machine: {m['host']}, {m['cpu']}, {m['cores']} cores; {m['compiler']}; {m['mpirun']}")
+        print(f"liggghts-tri: {a.tri}\nliggghts: {a.liggghts}\nlabel: {a.label}, load {loadavg()}")
+        configs = [(t, r) for t in a.threads for r in a.ranks if t == 1 or r == 1]
+        for n in a.n:
+            for ntri in a.ntri:
+                for kind in ("spheres", "rocks"):
+                    if any(p != "free" for p in a.phases):
+                        self.restarts(kind, n, ntri)
+                for phase in a.phases:
+                    for threads, ranks in configs:
+                        for rep in range(a.repeat):
+                            s = (self.measure("spheres", n, ntri, phase, 1, ranks, rep)
+                                 if threads == 1 else None)
+                            r = self.measure("rocks", n, ntri, phase, threads, ranks, rep)
+                            c = r["counters"]
+                            ratio = f"{r['ms_per_step'] / s['ms_per_step']:7.1f}x" if s else "      -"
+                            sph = f"{s['ms_per_step']:8.3f}" if s else "       -"
+                            cpu = (f" (CPU {s['cpu_ms_per_step']:.3f} / {r['cpu_ms_per_step']:.3f} ms "
+                                   f"{r['cpu_ms_per_step'] / max(s['cpu_ms_per_step'], 1e-9):.1f}x)"
+                                   if s else f" (CPU {r['cpu_ms_per_step']:.3f} ms)")
+                            print(f"{a.geometry} n={n:2d} ntri={ntri} {phase:8s} {threads}x{ranks} rep {rep}: "
+                                  f"spheres {sph} ms, rocks {r['ms_per_step']:8.3f} ms {ratio}{cpu} | "
+                                  f"checked {c['pairs_checked']:.0f} in contact "
+                                  f"{c['pairs_in_contact']:.0f} tested {c['triangle_pairs_tested']:.0f} "
+                                  f"within {c['triangle_contacts']:.0f} fallbacks {c['fallbacks']:.0f}"
+                                  f" | load {r['load_after'][0]:.1f}", flush=True)
+        print(f"results: {self.results_path}")
+
+
+# ---------------------------------------------------------------------------------------------
+# Summary table and figure
+
+
+def summarise(results):
+    """(label, n, ntri, phase, threads, ranks) -> best ms/step of rocks and of the spheres run
+    next to it, the median of the per-repetition ratios, and the rocks' counters."""
+    rows = {}
+    by_rep = {}
+    for r in results:
+        key = (r["label"], r.get("geometry", "pile"), r["n"], r["ntri"], r["phase"], r["threads"],
+               r["ranks"], r["rep"])
+        by_rep.setdefault(key, {})[r["kind"]] = r
+    for key, kinds in by_rep.items():
+        if "rocks" not in kinds:
+            continue
+        k = key[:7]
+        e = rows.setdefault(k, {"rocks": [], "spheres": [], "ratios": [], "counters": None,
+                                "loads": [], "cpu_ratios": [], "rocks_cpu": [], "spheres_cpu": []})
+        e["rocks"].append(kinds["rocks"]["ms_per_step"])
+        if "cpu_ms_per_step" in kinds["rocks"]:
+            e["rocks_cpu"].append(kinds["rocks"]["cpu_ms_per_step"])
+            if "spheres" in kinds:
+                e["spheres_cpu"].append(kinds["spheres"]["cpu_ms_per_step"])
+                e["cpu_ratios"].append(kinds["rocks"]["cpu_ms_per_step"] /
+                                       max(kinds["spheres"]["cpu_ms_per_step"], 1e-9))
+        e["counters"] = kinds["rocks"]["counters"]
+        e["loads"] += [kinds["rocks"]["load_before"][0], kinds["rocks"]["load_after"][0]]
+        if "spheres" in kinds:
+            e["spheres"].append(kinds["spheres"]["ms_per_step"])
+            e["ratios"].append(kinds["rocks"]["ms_per_step"] / kinds["spheres"]["ms_per_step"])
+    return rows
+
+
+def median(v):
+    v = sorted(v)
+    return v[len(v) // 2] if len(v) % 2 else 0.5 * (v[len(v) // 2 - 1] + v[len(v) // 2])
+
+
+def table(results):
+    rows = summarise(results)
+    print("| build | deck | rocks | phase | threads x ranks | spheres ms/step | rocks ms/step | "
+          "ratio (median) | CPU ratio (median) | pairs checked | in contact | triangle pairs tested | "
+          "within layer | tested/within | fallbacks | load |")
+    print("|---|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|")
+    order = {"free": 0, "forming": 1, "settled": 2, "formed": 3}
+    labels = []
+    for r in results:
+        if r["label"] not in labels:
+            labels.append(r["label"])
+    for k in sorted(rows, key=lambda k: (labels.index(k[0]), k[1], k[2], k[3], order.get(k[4], 9),
+                                         k[5], k[6])):
+        e = rows[k]
+        c = e["counters"]
+        sph = f"{min(e['spheres']):.3f}" if e["spheres"] else "–"
+        ratio = f"{median(e['ratios']):.1f}x" if e["ratios"] else "–"
+        cpu_ratio = f"{median(e['cpu_ratios']):.1f}x" if e["cpu_ratios"] else "–"
+        tw = (f"{c['triangle_pairs_tested'] / c['triangle_contacts']:.1f}"
+              if c["triangle_contacts"] else "–")
+        print(f"| {k[0]} | {k[1]} | {k[2]**3} x {k[3]} | {k[4]} | {k[5]}x{k[6]} | {sph} | {min(e['rocks']):.3f} | "
+              f"{ratio} | {cpu_ratio} | {c['pairs_checked']:.0f} | {c['pairs_in_contact']:.0f} | "
+              f"{c['triangle_pairs_tested']:.0f} | {c['triangle_contacts']:.0f} | {tw} | "
+              f"{c['fallbacks']:.0f} | {min(e['loads']):.1f}-{max(e['loads']):.1f} |")
+
+
+def plot(results, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    rows = summarise(results)
+    labels = sorted({k[0] for k in rows}, key=lambda l: [r["label"] for r in results].index(l))
+    phases = ["free", "forming", "settled"]
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
+    width = 0.8 / max(1, 2 * len(labels))
+    keys = [(ntri, p) for ntri in (20, 40) for p in phases]
+    for li, label in enumerate(labels):
+        for ti, ntri in enumerate((20, 40)):
+            vals = []
+            for p in phases:
+                e = next((rows[k] for k in rows if k[0] == label and k[1] == "pile" and k[3] == ntri
+                          and k[4] == p and k[5] == 1 and k[6] == 1), None)
+                vals.append(median(e["ratios"]) if e and e["ratios"] else 0.0)
+            xs = [i + (2 * li + ti) * width for i in range(len(phases))]
+            axes[0].bar(xs, vals, width, label=f"{label}, {ntri} triangles")
+    axes[0].set_xticks([i + 0.4 - width / 2 for i in range(len(phases))])
+    axes[0].set_xticklabels(phases)
+    axes[0].set_yscale("log")
+    axes[0].set_ylabel("rocks / spheres of equal mass (time per step)")
+    axes[0].axhline(40, color="k", ls="--", lw=0.8)
+    axes[0].axhline(3, color="k", ls=":", lw=0.8)
+    axes[0].text(2.6, 42, "settled floor 40x", fontsize=8, ha="right")
+    axes[0].text(0.9, 3.2, "free-flight floor 3x", fontsize=8, ha="right")
+    axes[0].legend(fontsize=8)
+    axes[0].set_title("1 thread, 1 rank")
+    for li, label in enumerate(labels):
+        for ti, ntri in enumerate((20, 40)):
+            vals = []
+            for p in phases:
+                e = next((rows[k] for k in rows if k[0] == label and k[1] == "pile" and k[3] == ntri
+                          and k[4] == p and k[5] == 1 and k[6] == 1), None)
+                c = e["counters"] if e else None
+                vals.append(c["triangle_pairs_tested"] / c["triangle_contacts"]
+                            if c and c["triangle_contacts"] else 0.0)
+            xs = [i + (2 * li + ti) * width for i in range(len(phases))]
+            axes[1].bar(xs, vals, width, label=f"{label}, {ntri} triangles")
+    axes[1].set_xticks([i + 0.4 - width / 2 for i in range(len(phases))])
+    axes[1].set_xticklabels(phases)
+    axes[1].set_ylabel("triangle pairs tested / within the layers")
+    axes[1].legend(fontsize=8)
+    axes[1].set_title("distance-kernel work per contact")
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    print(f"wrote {path}")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--tri", default=os.environ.get(
+        "LIGGGHTS_TRI", os.path.join(REPO, "build", "src_plugin", "driver", "liggghts-tri")))
+    ap.add_argument("--liggghts", default="/usr/bin/liggghts")
+    ap.add_argument("--work", default="/tmp/pile_bench")
+    ap.add_argument("--label", action="append", help="name of this build's results (default speed)")
+    ap.add_argument("--geometry", choices=["pile", "hopper"], default="pile",
+                    help="pile: in.pile (phases free forming settled); hopper: the paper's hopper, "
+                         "in.hopper_phase (phases free formed: from t = 0.2 s)")
+    ap.add_argument("--n", type=int, nargs="+")
+    ap.add_argument("--ntri", type=int, nargs="+", default=[20, 40])
+    ap.add_argument("--phases", nargs="+")
+    ap.add_argument("--steps", type=int, default=300, help="steps of a measured phase")
+    ap.add_argument("--sphere-factor", type=int, default=5,
+                    help="the spheres run this many times more steps (ms per step is compared)")
+    ap.add_argument("--free-steps", type=int, default=3000,
+                    help="steps of the free phase (the pile: without gravity, so it stays free)")
+    ap.add_argument("--repeat", type=int, default=2)
+    ap.add_argument("--threads", type=int, nargs="+", default=[1])
+    ap.add_argument("--ranks", type=int, nargs="+", default=[1])
+    ap.add_argument("--prepare", action="store_true", help="write the restart files again")
+    ap.add_argument("--run-timeout", type=float, default=900)
+    ap.add_argument("--settle-timeout", type=float, default=7200)
+    ap.add_argument("--table", action="store_true", help="print the table of the labels' results")
+    ap.add_argument("--plot", metavar="PNG", help="draw the labels' results")
+    a = ap.parse_args()
+    labels = a.label or ["speed"]
+    if a.table or a.plot:
+        results = []
+        for label in labels:
+            results += json.load(open(os.path.join(a.work, f"results_{label}.json")))
+        if a.table:
+            table(results)
+        if a.plot:
+            plot(results, a.plot)
+        return
+    a.label = labels[0]
+    a.n = a.n or ([8] if a.geometry == "pile" else [10])
+    a.phases = a.phases or (["free", "forming", "settled"] if a.geometry == "pile" else ["free", "formed"])
+    Bench(a).go()
+    table(Bench(a).results)
+
+
+if __name__ == "__main__":
+    main()
