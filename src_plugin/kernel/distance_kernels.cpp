@@ -10,6 +10,7 @@ namespace tri {
 HybridCounters &HybridCounters::operator+=(const HybridCounters &o) {
   penalty_pairs += o.penalty_pairs;
   fallbacks += o.fallbacks;
+  retries += o.retries;
   for (int k = 0; k <= kMaxPenaltyIterations; ++k)
     newton_histogram[k] += o.newton_histogram[k];
   return *this;
@@ -88,6 +89,62 @@ void count_newton(const PenaltyBlockResult &r, int n, HybridCounters &c) {
     ++c.newton_histogram[r.converged_at[l]];
 }
 
+// Collects the pairs the first penalty run could not certify and runs them again with
+// HybridSettings::retry_iterations steps whenever kPairLanes are pending (full lanes, as
+// PendingBruteForce); what the second run cannot certify either goes to brute force. Each
+// lane's result depends on its pair only, so the grouping changes no bits.
+class PendingRetry {
+public:
+  PendingRetry(const TriangleSoA &a, const TriangleSoA &b, const HybridSettings &s,
+               TrianglePairDistance *out, PendingBruteForce &brute_force, HybridCounters &c)
+      : a_(a), b_(b), s_(s), out_(out), brute_force_(brute_force), counters_(c) {}
+  // `first`: the first run's result, lane `lane` of it, where the second run goes on.
+  void add(const TrianglePairIndex &pair, int out_index, const PenaltyBlockResult &first,
+           int lane) {
+    block_.set_lane(n_, a_, pair.a, b_, pair.b);
+    for (int k = 0; k < 4; ++k)
+      start_[k][n_] = first.z[k][lane];
+    pair_[n_] = pair;
+    target_[n_++] = out_index;
+    if (n_ == kPairLanes)
+      flush();
+  }
+  void flush() {
+    if (n_ == 0)
+      return;
+    for (int l = n_; l < kPairLanes; ++l) {
+      block_.copy_lane(0, l);
+      for (int k = 0; k < 4; ++k)
+        start_[k][l] = start_[k][0];
+    }
+    penalty_block_resume(s_.retry_iterations - s_.newton_iterations, block_, start_, s_.penalty,
+                         s_.tolerance, r_, n_);
+    counters_.retries += n_;
+    for (int l = 0; l < n_; ++l) {
+      if (verdict(r_, l, s_) == Verdict::NeedsBruteForce) {
+        brute_force_.add(pair_[l], target_[l]);
+        ++counters_.fallbacks;
+      } else {
+        out_[target_[l]] = accepted_result(r_, l);
+      }
+    }
+    n_ = 0;
+  }
+
+private:
+  const TriangleSoA &a_, &b_;
+  const HybridSettings &s_;
+  TrianglePairDistance *out_;
+  PendingBruteForce &brute_force_;
+  HybridCounters &counters_;
+  TrianglePairBlock block_;
+  PenaltyBlockResult r_;
+  alignas(64) double start_[4][kPairLanes];
+  TrianglePairIndex pair_[kPairLanes];
+  int target_[kPairLanes];
+  int n_ = 0;
+};
+
 } // namespace
 
 void brute_force_distances(const TriangleSoA &a, const TriangleSoA &b,
@@ -156,19 +213,26 @@ void hybrid_distances(const TriangleSoA &a, const TriangleSoA &b, const Triangle
     count_newton(r, n, counters);
   };
   if (batch_size <= 0) {
+    const bool retry = settings.retry_iterations > settings.newton_iterations &&
+                       penalty_resume_supported(settings.retry_iterations -
+                                                settings.newton_iterations);
+    PendingRetry again(a, b, settings, out, pending, counters);
     for (int first = 0; first < count; first += kPairLanes) {
       const int n = std::min(kPairLanes, count - first);
       run_penalty(first, n);
       for (int l = 0; l < n; ++l) {
         const Verdict v = verdict(r, l, settings);
-        if (v == Verdict::NeedsBruteForce) {
+        if (v != Verdict::NeedsBruteForce) {
+          out[first + l] = accepted_result(r, l);
+        } else if (retry) {
+          again.add(pairs[first + l], first + l, r, l);
+        } else {
           pending.add(pairs[first + l], first + l);
           ++counters.fallbacks;
-        } else {
-          out[first + l] = accepted_result(r, l);
         }
       }
     }
+    again.flush(); // before `pending` flushes (its destructor): it may add to it
     return;
   }
   for (int batch = 0; batch < count; batch += batch_size) {

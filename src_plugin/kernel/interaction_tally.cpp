@@ -110,6 +110,10 @@ std::vector<StatColumn> make_columns() {
                            "body pairs of pairs_checked proven apart without a triangle-pair "
                            "search (kept separating axis; walls: also the wall triangles' planes)",
                            [](Tally &t, int) { return &t.distance.bodies_separated; }));
+  c.push_back(count_column("penalty_retries",
+                           "triangle pairs the first penalty run could not certify, run again "
+                           "with more Newton steps before any fallback (not in newton_k)",
+                           [](Tally &t, int) { return &t.distance.retries; }));
   return c;
 }
 

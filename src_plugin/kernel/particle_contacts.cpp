@@ -144,6 +144,7 @@ void find_triangle_contacts(const TriangleSoA &a, double eps_a, const TriangleSo
 
   HybridSettings hs;
   hs.newton_iterations = opt.newton_iterations;
+  hs.retry_iterations = opt.retry_iterations;
   hs.penalty = opt.penalty;
   hs.tolerance = opt.tolerance_ratio * std::min(eps_a, eps_b);
   hs.cutoff = cutoff;

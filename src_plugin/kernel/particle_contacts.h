@@ -59,6 +59,9 @@ struct ContactOptions {
   // false: world-frame boxes only (the cull before issue 12). Same contacts either way.
   bool tight_cull = true;
   int newton_iterations = 4;     // penalty steps; one of penalty_iterations_supported()
+  // Hybrid: the second penalty run of the pairs the first cannot certify, before brute force
+  // (distance_kernels.h: HybridSettings::retry_iterations); 0 or <= newton_iterations: none.
+  int retry_iterations = 8;
   double tolerance_ratio = 1e-4; // hybrid distance tolerance / min(eps_a, eps_b)
   PenaltyParameters penalty;     // scale-free penalty weight and regularisation
 };

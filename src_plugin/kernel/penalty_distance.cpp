@@ -18,9 +18,10 @@ TRI_LANE double dot3(const double u[3], const double v[3]) {
 
 // One lane. A separate function so that its locals stay out of the caller's `omp simd`
 // lowering (see brute_force_lane); after inlining everything is in registers.
-template <int Iterations>
+template <int Iterations, bool Resume>
 TRI_LANE void penalty_lane(const double (*c)[kPairLanes], int l, double weight, double reg,
-                           double step_tol2, PenaltyBlockResult &out) {
+                           double step_tol2, const double (*start)[kPairLanes],
+                           PenaltyBlockResult &out) {
   double a0[3], b0[3], col[4][3], r0[3];
 #pragma GCC unroll 3
   for (int k = 0; k < 3; ++k) {
@@ -45,6 +46,9 @@ TRI_LANE void penalty_lane(const double (*c)[kPairLanes], int l, double weight, 
   const double tol2 = step_tol2 / s2; // step tolerance in barycentric units, squared
 
   double z0 = 1.0 / 3.0, z1 = 1.0 / 3.0, z2 = 1.0 / 3.0, z3 = 1.0 / 3.0;
+  if constexpr (Resume) {
+    z0 = start[0][l], z1 = start[1][l], z2 = start[2][l], z3 = start[3][l];
+  }
   int converged_at = 0;
 #pragma GCC unroll 32
   for (int it = 1; it <= Iterations; ++it) {
@@ -84,6 +88,7 @@ TRI_LANE void penalty_lane(const double (*c)[kPairLanes], int l, double weight, 
     converged_at = (converged_at == 0 && step2 <= tol2) ? it : converged_at;
   }
 
+  out.z[0][l] = z0, out.z[1][l] = z1, out.z[2][l] = z2, out.z[3][l] = z3;
   // Feasible points: clamp at 0, scale back onto a + b <= 1.
   const double fa = positive(z0), fb = positive(z1), fc = positive(z2), fd = positive(z3);
   const double sab = 1.0 / std::max(1.0, fa + fb), scd = 1.0 / std::max(1.0, fc + fd);
@@ -120,14 +125,15 @@ TRI_LANE void bounds_lane(const double (*c)[kPairLanes], int l, PenaltyBlockResu
 }
 
 // The first `Lanes` lanes of a block (the same per-lane code for any Lanes).
-template <int Iterations, int Lanes>
+template <int Iterations, int Lanes, bool Resume>
 void penalty_lanes(const TrianglePairBlock &block, const PenaltyParameters &params,
-                   double step_tolerance, PenaltyBlockResult &out) {
+                   double step_tolerance, const double (*start)[kPairLanes],
+                   PenaltyBlockResult &out) {
   const double weight = params.penalty_weight, reg = params.regularisation;
   const double step_tol2 = step_tolerance * step_tolerance;
 #pragma omp simd
   for (int l = 0; l < Lanes; ++l)
-    penalty_lane<Iterations>(block.c, l, weight, reg, step_tol2, out);
+    penalty_lane<Iterations, Resume>(block.c, l, weight, reg, step_tol2, start, out);
   for (int l = 0; l < Lanes; ++l) {
     double d2 = 0.0;
     for (int k = 0; k < 3; ++k) {
@@ -149,9 +155,19 @@ void penalty_block(const TrianglePairBlock &block, const PenaltyParameters &para
   // A block with at most half its lanes used (the last of a short list) runs half a block:
   // each lane's result is the same bits either way (tested).
   if (used <= kPairLanes / 2)
-    penalty_lanes<Iterations, kPairLanes / 2>(block, params, step_tolerance, out);
+    penalty_lanes<Iterations, kPairLanes / 2, false>(block, params, step_tolerance, nullptr, out);
   else
-    penalty_lanes<Iterations, kPairLanes>(block, params, step_tolerance, out);
+    penalty_lanes<Iterations, kPairLanes, false>(block, params, step_tolerance, nullptr, out);
+}
+
+template <int Iterations>
+void penalty_block_resume(const TrianglePairBlock &block, const double (*start)[kPairLanes],
+                          const PenaltyParameters &params, double step_tolerance,
+                          PenaltyBlockResult &out, int used) {
+  if (used <= kPairLanes / 2)
+    penalty_lanes<Iterations, kPairLanes / 2, true>(block, params, step_tolerance, start, out);
+  else
+    penalty_lanes<Iterations, kPairLanes, true>(block, params, step_tolerance, start, out);
 }
 
 #define TRI_PENALTY_COUNTS(X) X(1) X(2) X(3) X(4) X(5) X(6) X(7) X(8) X(10) X(12) X(16) X(24) X(32)
@@ -161,6 +177,34 @@ void penalty_block(const TrianglePairBlock &block, const PenaltyParameters &para
                                  PenaltyBlockResult &, int);
 TRI_PENALTY_COUNTS(TRI_INSTANTIATE)
 #undef TRI_INSTANTIATE
+
+// Resumed runs: only the counts a retry after the default 4 steps needs (4 more to 8, 8 more to 12, 12 more to 16).
+template void penalty_block_resume<4>(const TrianglePairBlock &, const double (*)[kPairLanes],
+                                      const PenaltyParameters &, double, PenaltyBlockResult &, int);
+template void penalty_block_resume<8>(const TrianglePairBlock &, const double (*)[kPairLanes],
+                                      const PenaltyParameters &, double, PenaltyBlockResult &, int);
+template void penalty_block_resume<12>(const TrianglePairBlock &, const double (*)[kPairLanes],
+                                       const PenaltyParameters &, double, PenaltyBlockResult &, int);
+
+bool penalty_resume_supported(int iterations) {
+  return iterations == 4 || iterations == 8 || iterations == 12;
+}
+
+void penalty_block_resume(int iterations, const TrianglePairBlock &block,
+                          const double (*start)[kPairLanes], const PenaltyParameters &params,
+                          double step_tolerance, PenaltyBlockResult &out, int used) {
+  switch (iterations) {
+  case 4:
+    return penalty_block_resume<4>(block, start, params, step_tolerance, out, used);
+  case 8:
+    return penalty_block_resume<8>(block, start, params, step_tolerance, out, used);
+  case 12:
+    return penalty_block_resume<12>(block, start, params, step_tolerance, out, used);
+  default:
+    throw std::invalid_argument("penalty_block_resume: unsupported Newton iteration count " +
+                                std::to_string(iterations));
+  }
+}
 
 bool penalty_iterations_supported(int iterations) {
 #define TRI_CASE(N) case N:

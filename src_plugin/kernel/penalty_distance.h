@@ -50,6 +50,8 @@ struct alignas(64) PenaltyBlockResult {
   double point_b[3][kPairLanes]; // q
   int converged_at[kPairLanes];  // first iteration whose step s |dz|_2 was below
                                  // the step tolerance; 0 if none was
+  double z[4][kPairLanes];       // the barycentric unknowns (a, b, c, d) after the last step,
+                                 // before the clamping: where penalty_block_resume goes on
 };
 
 // Runs `Iterations` steps on the lanes of `block`: all of them, or, when the caller uses at
@@ -67,6 +69,15 @@ constexpr int kMaxPenaltyIterations = 32;
 // Run-time choice among the instantiated counts; throws std::invalid_argument otherwise.
 void penalty_block(int iterations, const TrianglePairBlock &block, const PenaltyParameters &params,
                    double step_tolerance, PenaltyBlockResult &out, int used = kPairLanes);
+
+// `Iterations` more steps from the unknowns `start` (a PenaltyBlockResult::z, lanes as in
+// `block`) instead of the centroids: N steps and then M resumed steps give bit for bit the
+// result of N + M steps (converged_at counts from the resumed start). The retry of the hybrid
+// kernel (distance_kernels.h) goes on where the first run stopped. Instantiated for 4, 8, 12.
+bool penalty_resume_supported(int iterations);
+void penalty_block_resume(int iterations, const TrianglePairBlock &block,
+                          const double (*start)[kPairLanes], const PenaltyParameters &params,
+                          double step_tolerance, PenaltyBlockResult &out, int used = kPairLanes);
 
 // Floating-point operations per pair, counted by hand from penalty_distance.cpp (FMA = 2),
 // for the benchmark's GFLOP/s estimate only.

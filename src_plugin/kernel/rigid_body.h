@@ -96,6 +96,13 @@ void rotate_free_many(int n, double *qw, double *qx, double *qy, double *qz, con
                       const double *i2, double dt, double *wx, double *wy, double *wz,
                       int *scratch);
 
+// angular_velocity_unit for n particles at once, vectorised across them (fix tri/nve's second
+// half step): (wx, wy, wz)[k] = angular_velocity_unit(q[k], L[k], 1/I[k]) bit for bit, q unit.
+void angular_velocity_unit_many(int n, const double *qw, const double *qx, const double *qy,
+                                const double *qz, const double *lx, const double *ly,
+                                const double *lz, const double *i0, const double *i1,
+                                const double *i2, double *wx, double *wy, double *wz);
+
 // Inverse of angular_velocity: L_space = R diag(I) R^T omega_space (e.g. to start a particle
 // from a LIGGGHTS `omega`).
 Eigen::Vector3d angmom_from_omega(const Eigen::Quaterniond &q, const Eigen::Vector3d &omega_space,

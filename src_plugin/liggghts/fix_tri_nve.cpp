@@ -70,32 +70,66 @@ void FixTriNVE::sync_omega(int i) {
 }
 
 void FixTriNVE::initial_integrate(int) {
-  double **x = atom->x, **v = atom->v, **f = atom->f;
+  double **x = atom->x, **v = atom->v, **f = atom->f, **torque = atom->torque;
   const double *rmass = atom->rmass;
   const int *mask = atom->mask;
   const int nlocal = atom->nlocal;
+  // Translation and the first rotational kick per atom; the free rotation of all atoms at
+  // once (tri::rotate_free_many, vectorised across atoms: one atom's rotor is a long serial
+  // chain, most of a free-flight step when done one atom at a time). Each atom's bits are
+  // rotate_free's whatever its place in the batch, so thread and rank counts change nothing.
+  rotor_.resize(nlocal);
+  int n = 0;
   for (int i = 0; i < nlocal; ++i) {
     if (!(mask[i] & groupbit))
       continue;
     // Right after read_restart: the forces of the step the file was written at.
-    particles_->take_restored_force_and_torque(i, f[i], atom->torque[i]);
+    particles_->take_restored_force_and_torque(i, f[i], torque[i]);
     const double dtfm = dtf_ / rmass[i];
     for (int k = 0; k < 3; ++k) {
       v[i][k] += dtfm * f[i][k];
       x[i][k] += dtv_ * v[i][k];
     }
-    // kick_rotation, rotate_free and sync_omega in one pass over the atom's state.
-    const double *t = atom->torque[i];
-    Eigen::Vector3d L = particles_->angular_momentum(i) + dtf_ * Eigen::Vector3d(t[0], t[1], t[2]);
-    Eigen::Quaterniond q = particles_->orientation(i);
+    const double *t = torque[i];
+    const Eigen::Vector3d L = particles_->angular_momentum(i) + dtf_ * Eigen::Vector3d(t[0], t[1], t[2]);
+    const Eigen::Quaterniond q = particles_->orientation(i);
     const Eigen::Vector3d inertia = particles_->principal_inertia(i);
-    tri::rotate_free(q, L, inertia, dtv_);
-    particles_->set_orientation(i, q);
-    particles_->set_angular_momentum(i, L);
-    const Eigen::Vector3d w = tri::angular_velocity_unit(q, L, inertia.cwiseInverse());
-    for (int k = 0; k < 3; ++k)
-      atom->omega[i][k] = w[k];
+    rotor_.set(n, i, q, L, inertia);
+    ++n;
   }
+  tri::rotate_free_many(n, rotor_.qw.data(), rotor_.qx.data(), rotor_.qy.data(), rotor_.qz.data(),
+                        rotor_.lx.data(), rotor_.ly.data(), rotor_.lz.data(), rotor_.i0.data(),
+                        rotor_.i1.data(), rotor_.i2.data(), dtv_, rotor_.wx.data(),
+                        rotor_.wy.data(), rotor_.wz.data(), rotor_.large.data());
+  double **omega = atom->omega;
+  for (int k = 0; k < n; ++k) {
+    const int i = rotor_.atom[k];
+    particles_->set_orientation(i, Eigen::Quaterniond(rotor_.qw[k], rotor_.qx[k], rotor_.qy[k],
+                                                      rotor_.qz[k]));
+    particles_->set_angular_momentum(i, Eigen::Vector3d(rotor_.lx[k], rotor_.ly[k], rotor_.lz[k]));
+    omega[i][0] = rotor_.wx[k];
+    omega[i][1] = rotor_.wy[k];
+    omega[i][2] = rotor_.wz[k];
+  }
+}
+
+void FixTriNVE::RotorBatch::resize(int n) {
+  const std::size_t m = static_cast<std::size_t>(n);
+  for (std::vector<double> *a : {&qw, &qx, &qy, &qz, &lx, &ly, &lz, &i0, &i1, &i2, &wx, &wy, &wz})
+    if (a->size() < m)
+      a->resize(m);
+  if (atom.size() < m) {
+    atom.resize(m);
+    large.resize(m);
+  }
+}
+
+void FixTriNVE::RotorBatch::set(int k, int i, const Eigen::Quaterniond &q,
+                                const Eigen::Vector3d &l, const Eigen::Vector3d &inertia) {
+  atom[k] = i;
+  qw[k] = q.w(), qx[k] = q.x(), qy[k] = q.y(), qz[k] = q.z();
+  lx[k] = l.x(), ly[k] = l.y(), lz[k] = l.z();
+  i0[k] = inertia.x(), i1[k] = inertia.y(), i2[k] = inertia.z();
 }
 
 void FixTriNVE::final_integrate() {
@@ -103,6 +137,10 @@ void FixTriNVE::final_integrate() {
   const double *rmass = atom->rmass;
   const int *mask = atom->mask;
   const int nlocal = atom->nlocal;
+  // The second kick per atom; omega from q and L for all atoms at once (vectorised, each
+  // atom's bits those of sync_omega).
+  rotor_.resize(nlocal);
+  int n = 0;
   for (int i = 0; i < nlocal; ++i) {
     if (!(mask[i] & groupbit))
       continue;
@@ -110,6 +148,20 @@ void FixTriNVE::final_integrate() {
     for (int k = 0; k < 3; ++k)
       v[i][k] += dtfm * f[i][k];
     kick_rotation(i, dtf_);
-    sync_omega(i);
+    rotor_.set(n, i, particles_->orientation(i), particles_->angular_momentum(i),
+               particles_->principal_inertia(i));
+    ++n;
+  }
+  tri::angular_velocity_unit_many(n, rotor_.qw.data(), rotor_.qx.data(), rotor_.qy.data(),
+                                  rotor_.qz.data(), rotor_.lx.data(), rotor_.ly.data(),
+                                  rotor_.lz.data(), rotor_.i0.data(), rotor_.i1.data(),
+                                  rotor_.i2.data(), rotor_.wx.data(), rotor_.wy.data(),
+                                  rotor_.wz.data());
+  double **omega = atom->omega;
+  for (int k = 0; k < n; ++k) {
+    const int i = rotor_.atom[k];
+    omega[i][0] = rotor_.wx[k];
+    omega[i][1] = rotor_.wy[k];
+    omega[i][2] = rotor_.wz[k];
   }
 }

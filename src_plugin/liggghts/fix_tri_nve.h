@@ -7,6 +7,11 @@
 
 #include "fix.h"
 
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <vector>
+
 namespace LAMMPS_NS {
 
 class FixTriNVE : public Fix {
@@ -24,6 +29,16 @@ private:
   double dtv_ = 0.0, dtf_ = 0.0;
   void kick_rotation(int i, double dt);
   void sync_omega(int i); // omega := angular velocity implied by q and L
+  // The group's atoms of one initial_integrate in the structure-of-arrays form of
+  // tri::rotate_free_many (kept between steps: no allocation once grown).
+  struct RotorBatch {
+    std::vector<double> qw, qx, qy, qz, lx, ly, lz, i0, i1, i2, wx, wy, wz;
+    std::vector<int> atom, large;
+    void resize(int n);
+    void set(int k, int i, const Eigen::Quaterniond &q, const Eigen::Vector3d &l,
+             const Eigen::Vector3d &inertia);
+  };
+  RotorBatch rotor_;
 };
 
 } // namespace LAMMPS_NS

@@ -96,6 +96,44 @@ TEST(Hybrid, ResultsDoNotDependOnHowTheListIsSplit) {
   }
 }
 
+// The retry (HybridSettings::retry_iterations, on in the simulations): pairs the first 4 steps
+// cannot certify go on to 8 before any fallback. Every pair stays within the tolerance of
+// brute force, contacts at a cutoff agree with it exactly, fewer pairs fall back, and
+// splitting the list (other pairs sharing the retry's lanes) changes no bits; at every scale.
+TEST_P(HybridAtScale, RetryKeepsBruteForcesAnswersWithFewerFallbacks) {
+  const double scale = GetParam();
+  const PairSet s = make_set(scale, 45);
+  const int n = static_cast<int>(s.pairs.size());
+  std::vector<TrianglePairDistance> bf(n), plain(n), retried(n), parts(n);
+  brute_force_distances(s.a, s.b, s.pairs.data(), n, bf.data());
+  HybridSettings hs;
+  hs.tolerance = 1e-7 * scale;
+  hs.cutoff = 0.0437 * scale; // the random pairs spread across it (no case sits on it)
+  HybridCounters without, with, split;
+  hybrid_distances(s.a, s.b, s.pairs.data(), n, hs, 0, plain.data(), without);
+  hs.retry_iterations = 8;
+  hybrid_distances(s.a, s.b, s.pairs.data(), n, hs, 0, retried.data(), with);
+  const int cut = 101;
+  hybrid_distances(s.a, s.b, s.pairs.data(), cut, hs, 0, parts.data(), split);
+  hybrid_distances(s.a, s.b, s.pairs.data() + cut, n - cut, hs, 0, parts.data() + cut, split);
+  int contacts = 0;
+  for (int k = 0; k < n; ++k) {
+    ASSERT_EQ(retried[k].distance < hs.cutoff, bf[k].distance < hs.cutoff) << s.names[k];
+    contacts += bf[k].distance < hs.cutoff;
+    if (bf[k].distance < hs.cutoff)
+      ASSERT_NEAR(retried[k].distance, bf[k].distance, hs.tolerance) << s.names[k];
+    ASSERT_EQ(retried[k].intersecting, bf[k].intersecting) << s.names[k];
+    ASSERT_EQ(parts[k].distance, retried[k].distance) << s.names[k];
+    ASSERT_EQ(parts[k].point_a, retried[k].point_a) << s.names[k];
+    ASSERT_EQ(parts[k].normal, retried[k].normal) << s.names[k];
+  }
+  EXPECT_GT(contacts, n / 20);
+  EXPECT_EQ(with.retries, without.fallbacks); // every pair the first run left is retried
+  EXPECT_GT(with.fallbacks, 0);               // intersecting pairs still need brute force
+  EXPECT_LT(with.fallbacks, without.fallbacks);
+  EXPECT_EQ(with.penalty_pairs, without.penalty_pairs); // retries are not in the histogram
+}
+
 TEST(Penalty, AloneIsCloseButUnchecked) {
   const PairSet s = make_set(1.0, 44);
   const int n = static_cast<int>(s.pairs.size());

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+
 using namespace tri;
 using namespace tri_test;
 
@@ -129,4 +131,47 @@ TEST(PenaltyDistance, HalfBlocksGiveTheFullBlocksBits) {
       ASSERT_EQ(bf_full[l].normal, bf_half[l].normal) << "case " << first + l;
     }
   }
+}
+
+// The hybrid kernel's retry goes on where the first run stopped: N steps, then M resumed
+// steps from PenaltyBlockResult::z, must be bit for bit N + M steps from the centroids
+// (bounds, points and the unknowns), in full and half blocks.
+TEST(PenaltyDistance, ResumedStepsGiveTheLongerRunsBits) {
+  std::vector<TriangleCase> cases = random_cases(200, 1.0, 11);
+  for (double scale : {1e-6, 1e3})
+    for (const TriangleCase &c : adversarial_cases(scale, 3))
+      cases.push_back(c);
+  EXPECT_TRUE(penalty_resume_supported(4));
+  EXPECT_FALSE(penalty_resume_supported(5));
+  for (int more : {4, 8, 12}) {
+    for (std::size_t first = 0; first + kPairLanes <= cases.size(); first += kPairLanes) {
+      TrianglePairBlock block;
+      for (int l = 0; l < kPairLanes; ++l)
+        block.set_lane(l, cases[first + l].a, cases[first + l].b);
+      const double tol = 1e-9 * cases[first].a[0].norm();
+      for (int used : {kPairLanes, kPairLanes / 2}) {
+        PenaltyBlockResult start, resumed, whole;
+        penalty_block(4, block, PenaltyParameters{}, tol, start, used);
+        penalty_block_resume(more, block, start.z, PenaltyParameters{}, tol, resumed, used);
+        penalty_block(4 + more, block, PenaltyParameters{}, tol, whole, used);
+        for (int l = 0; l < used; ++l) {
+          const std::string what = "case " + std::to_string(first + l) + ", 4 + " +
+                                   std::to_string(more) + " steps, " + std::to_string(used) +
+                                   " lanes";
+          ASSERT_EQ(whole.upper[l], resumed.upper[l]) << what;
+          ASSERT_EQ(whole.lower[l], resumed.lower[l]) << what;
+          for (int k = 0; k < 3; ++k) {
+            ASSERT_EQ(whole.point_a[k][l], resumed.point_a[k][l]) << what;
+            ASSERT_EQ(whole.point_b[k][l], resumed.point_b[k][l]) << what;
+          }
+          for (int k = 0; k < 4; ++k)
+            ASSERT_EQ(whole.z[k][l], resumed.z[k][l]) << what;
+        }
+      }
+    }
+  }
+  TrianglePairBlock block;
+  PenaltyBlockResult r;
+  EXPECT_THROW(penalty_block_resume(5, block, r.z, PenaltyParameters{}, 0.0, r),
+               std::invalid_argument);
 }
