@@ -35,7 +35,15 @@ PairForceResult pair_contact_force(const std::vector<ContactPoint> &contacts, co
   for (int i = 0; i < n; ++i) {
     const ContactPoint &c = contacts[i];
     const ContactKinematics k = contact_kinematics(c.point, c.normal, a, b);
-    const double f_n = normal_force(coeff, c.overlap, k.v_n, m_eff);
+    // The dashpot at the patch's area centre (contact_reduction.h step 6): measured there and
+    // acting there, so that its power is -gamma v_n^2 there; the spring at the point.
+    const bool patch = c.patch_area > 0.0;
+    const Vector3d damping_point = patch ? c.damping_point : c.point;
+    const double v_n =
+        patch ? contact_kinematics(damping_point, c.normal, a, b).v_n : k.v_n;
+    const double f_n = normal_force(coeff, c.overlap, v_n, m_eff);
+    const double f_spring = patch ? normal_force(coeff, c.overlap, 0.0, m_eff) : f_n;
+    const double f_damper = f_n - f_spring;
     const TwistPatch twist_patch = twist_patch_of(c);
     const double w_n = (b.omega - a.omega).dot(c.normal);
     Friction friction;
@@ -60,19 +68,27 @@ PairForceResult pair_contact_force(const std::vector<ContactPoint> &contacts, co
       friction = friction_no_history(coeff, k.v_t, w_n, f_n, m_eff, twist_patch);
       break;
     }
-    const Vector3d f_b = f_n * c.normal + friction.force;
+    const Vector3d f_b = f_spring * c.normal + friction.force;
     r.force_a -= f_b;
     r.torque_a -= (c.point - a.x).cross(f_b);
     r.torque_b += (c.point - b.x).cross(f_b);
+    if (f_damper != 0.0) {
+      const Vector3d d_b = f_damper * c.normal;
+      r.force_a -= d_b;
+      r.torque_a -= (damping_point - a.x).cross(d_b);
+      r.torque_b += (damping_point - b.x).cross(d_b);
+    }
     if (friction.twist_torque != 0.0) {
       const Vector3d couple_b = friction.twist_torque * c.normal;
       r.torque_a -= couple_b;
       r.torque_b += couple_b;
     }
-    if (c.patch_area > 0.0) {
-      const Vector3d couple_b = rocking_couple(coeff, c.normal, c.patch_area,
-                                               c.patch_second_moment, b.omega - a.omega, f_n,
-                                               m_eff);
+    if (c.patch_area > 0.0 && c.face_weight > 0.0) {
+      // In proportion to the face weight (contact_reduction.h step 6): a patch of facets
+      // under a rolling ball (a cone of overlap, face weight 0) is not braked.
+      const Vector3d couple_b =
+          c.face_weight * rocking_couple(coeff, c.normal, c.patch_area, c.patch_second_moment,
+                                         b.omega - a.omega, f_n, m_eff);
       r.torque_a -= couple_b;
       r.torque_b += couple_b;
     }

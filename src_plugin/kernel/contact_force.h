@@ -4,12 +4,16 @@
 // lives in the host's per-pair array (layout and matching in contact_history.h).
 //
 // Per contact point p with normal n and overlap delta:
-//   kinematics at p (rotation included), F_n = normal_force(...), (F_t, T_w) = friction sub-
+//   kinematics at p (rotation included), F_n = normal_force(...) (for a patch, patch_area
+//   > 0, its dashpot part with v_n at the patch's area centre c_A and acting there, the spring
+//   part at p: contact_reduction.h step 6), (F_t, T_w) = friction sub-
 //   model (friction_history or friction_no_history: sliding and, for a face-like contact,
 //   twisting, w_n = (omega_b - omega_a) . n), F_b = F_n n + F_t (on b), F_a = -F_b;
 //   torque_a += (p - x_a) x F_a - T_w n, torque_b += (p - x_b) x F_b + T_w n, friction
-//   included; for a face contact (patch_area > 0) also the rocking damper's
-//   couple C_b = rocking_couple(..., omega_b - omega_a, F_n, ...): torque_b += C_b,
+//   included; for a face contact (patch_area > 0) also the rocking damper's couple, in
+//   proportion to the face weight w (contact_reduction.h step 6: a face lying flat rocks on
+//   the other; a ball rolling over nearly flat facets, whose overlap is a cone, w = 0, is not
+//   braked), C_b = w rocking_couple(..., omega_b - omega_a, F_n, ...): torque_b += C_b,
 //   torque_a -= C_b (contact_model.h: a pure couple that dissipates the relative rocking a
 //   single force point cannot see). Hence F_a + F_b = 0 and total angular momentum is
 //   conserved about any point: (x_a - o) x F_a + torque_a + (x_b - o) x F_b + torque_b = 0

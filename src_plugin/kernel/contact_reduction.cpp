@@ -162,6 +162,20 @@ double smoothstep(double x) {
   return x * x * (3.0 - 2.0 * x);
 }
 
+// Face weight of a patch (step 6): 1 when its polygons are the overlap of two flat regions
+// (the same overlap gradient over the whole patch: a face on a face, tilted or not, evenly or
+// eccentrically pressed), 0 when the gradient turns over the patch (the facets of a ball, a
+// curved surface: spread above 2 kFlatGradientSpread) or the faces are about to leave the
+// polygons' range (tilt from kParallelFaceAngle / 2 to kParallelFaceAngle): smooth in both.
+// spread, tilt: the area-weighted RMS deviation and the magnitude of the mean of the
+// polygons' overlap gradients (1: the slope of the local overlap).
+double face_weight_of(double spread, double tilt) {
+  const double tilt_full = 2.0 * std::tan(0.25 * kParallelFaceAngle);
+  const double tilt_end = 2.0 * std::tan(0.5 * kParallelFaceAngle);
+  return (1.0 - smoothstep((spread - kFlatGradientSpread) / kFlatGradientSpread)) *
+         (1.0 - smoothstep((tilt - tilt_full) / (tilt_end - tilt_full)));
+}
+
 ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &members,
                         const std::vector<int> &cls, const std::vector<int> &absorbed, int c,
                         int seed, double layer, const Vector3d &ref, const Faces &faces,
@@ -245,6 +259,8 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
   double area = 0.0, weight = 0.0, weight2 = 0.0;
   Vector3d area1 = Vector3d::Zero(), pressure1 = Vector3d::Zero(), area_normal = Vector3d::Zero();
   Eigen::Matrix3d area2 = Eigen::Matrix3d::Zero();
+  Vector3d gradient1 = Vector3d::Zero();
+  double gradient2 = 0.0;
   for (std::size_t k = 0; k < polygons.size(); ++k) {
     const ContactPolygon &poly = polygons[k];
     // Each polygon's deepest region, tapered (continuous in the geometry): its weight is the
@@ -277,6 +293,8 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
     pressure1 += poly.weight * (poly.centroid - s.point);
     area2 += poly.second_moment + poly.area * d * d.transpose();
     area_normal += poly.area * poly.direction;
+    gradient1 += poly.area * poly.overlap_gradient;
+    gradient2 += poly.area * poly.overlap_gradient.squaredNorm();
   }
   // excess > 0: the deepest corner exceeds the level (its polygon has a region above it).
   const Vector3d poly_deepest = excess > 0.0 ? Vector3d(s.point + excess1 / excess) : s.point;
@@ -333,7 +351,9 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
     const Vector3d blended = (1.0 - b) * deepest_normal + b * poly_normal;
     p.normal = blended.normalized();
   }
-  p.face_weight = beta * (1.0 - plain_share);
+  const Vector3d mean_gradient = gradient1 / area;
+  const double spread = std::sqrt(std::max(0.0, gradient2 / area - mean_gradient.squaredNorm()));
+  p.face_weight = face_weight_of(spread, mean_gradient.norm()) * (1.0 - plain_share);
   // Step 6: the patch's extent about the point. Parallel-axis theorem from s.point to p.point
   // (q = p.point - s.point), then onto the contact plane.
   const Vector3d q = p.point - s.point;
@@ -343,6 +363,7 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
   const Eigen::Matrix3d j = plane * about_point * plane;
   p.patch_second_moment = 0.5 * (j + j.transpose());
   p.patch_area = area;
+  p.damping_point = s.point + area1 / area;
   // The mean distance of the patch from the point, over the same polygons, projected onto the
   // contact plane (numerator and denominator alike).
   DistanceIntegral dist;

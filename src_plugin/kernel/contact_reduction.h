@@ -146,14 +146,36 @@
 //                             form per polygon edge, contact_polygon.h polygon_distance_integral):
 //                             the lever of Coulomb friction spread over a uniformly pressed
 //                             region turning about the point (mu F_n r_mean);
-//       face_weight         = beta (times one minus the share of members without a polygon):
-//                             how much the contact is a face lying flat. The rocking damper and
-//                             the twist spring act in proportion to it: a vertex, an edge or a
-//                             clearly tilted face (beta = 0) is a point, free to roll and to
-//                             twist as LIGGGHTS's spheres are; a ball rolling over nearly flat
-//                             facets (a vertex's cone, r >= 5) is not braked.
+//       face_weight         = how much the contact is a flat region on a flat region (times
+//                             one minus the share of members without a polygon): 1 when the
+//                             polygons' overlap gradients (the relative slope of the two
+//                             surfaces) are the same over the whole patch, 0 when they turn
+//                             over it (area-weighted RMS deviation above 2 kFlatGradientSpread:
+//                             the facets of a ball, whose slope turns by patch radius / R) and,
+//                             smoothly, as the faces tilt from 5 to 10 degrees (the polygons'
+//                             range). The rocking damper and the twist spring act in proportion
+//                             to it: a vertex, an edge, a face about to leave the polygons'
+//                             range, or a ball on near-flat facets is a point, free to roll and
+//                             to twist as LIGGGHTS's spheres are; a face pressed on a face, evenly
+//                             or not (a cube resting on an incline, sliding, or stacked off
+//                             centre), rocks damped and twists against friction. Not beta: a
+//                             face loaded off centre is uneven (its centre of pressure moves
+//                             towards the low side, r >= 1 for an eccentricity of a sixth of its
+//                             width) and is still a face (measured with beta: a cube stacked
+//                             1 mm off centre on another kept turning at 1.3 rad/s, a cube
+//                             sliding down an incline rocked at 1.7 rad/s).
+//       damping_point       = the patch's area centre c_A: where the normal dashpot measures
+//                             the approach and acts (contact_force.h). The deepest point of a
+//                             ball rolling over facets is a vertex off its lowest point, whose
+//                             material velocity has a normal part +-omega x offset as the vertex
+//                             passes under (measured: a 1280-triangle icosphere rolling down
+//                             20 degrees, gamman 200, accelerated 1.5 % below the rigid-body value
+//                             with the dashpot there); the region's centre sees the approach of
+//                             the two bodies, not the passing of facets, and a dashpot force at
+//                             the point where its velocity is measured only dissipates.
 //     Like the point, all are those of the faces' overlap region for any meshing (the polygons
-//     tile it). A class without polygons gets 0 for all: no couple, no twist.
+//     tile it). A class without polygons gets 0 for all: no couple, no twist, the dashpot at
+//     the point.
 //
 // Intersecting triangles (real surfaces crossing: the soft layer was overrun). The kernel's
 // normal for such a pair (minimum-overlap separating axis) is used when finite; otherwise
@@ -192,6 +214,11 @@ namespace tri {
 // Step 5b: how uneven (deepest minus mean overlap over the contact polygons, as a fraction of
 // the deepest overlap) a face contact may be before it is treated as the deepest pair alone.
 constexpr double kFlatPatchBand = 0.1;
+// Step 6: the spread of the polygons' overlap gradients (RMS, dimensionless slope) up to which a
+// patch is a flat region on a flat region (face weight 1), falling to 0 at twice it. A ball's
+// patch of facets spreads by about its radius over the ball's (0.1 for a soft contact of a
+// 2 mm icosphere); two flat faces meshed by any triangles by rounding only.
+constexpr double kFlatGradientSpread = 0.01;
 
 struct ContactPoint {
   Eigen::Vector3d point = Eigen::Vector3d::Zero();   // m, world frame
@@ -207,6 +234,9 @@ struct ContactPoint {
                                                                  // plane orthogonal to `normal`
   double patch_mean_radius = 0.0; // m, mean distance of the patch from `point` (step 6)
   double face_weight = 0.0;       // 1 lying flat, 0 point-like or clearly tilted (step 6)
+  // Where the normal dashpot measures the approach and pushes (step 6): the patch's area
+  // centre when patch_area > 0 (else unused: `point`).
+  Eigen::Vector3d damping_point = Eigen::Vector3d::Zero(); // m
   // The overlap whose 1/2 kn energy_overlap^2 is the contact's elastic energy (step 5b); equal
   // to `overlap` except for faces lying flat (there `overlap` is the force's, kn overlap).
   double energy_overlap = 0.0; // m

@@ -7,6 +7,7 @@
 #include "contact_reduction.h"
 #include "particle_contacts.h"
 #include "point_triangle.h"
+#include "test_meshes.h"
 
 #include <gtest/gtest.h>
 
@@ -613,9 +614,9 @@ TEST(ContactReductionPoint, SlightlyTiltedFaceSlidesFromTheAreaCentreToTheLowEdg
                     "overlap %.6e\n",
                     tilt, 2 * k * k, plane_k, dx, points[0].point.y() - face_centre.y(),
                     points[0].overlap);
-        // Step 6: the face weight is 1 - 3 r^2 + 2 r^3 below the band's end, 0 beyond it.
-        const double want_weight = r < 1.0 ? (1 - r) * (1 - r) * (1 + 2 * r) : 0.0;
-        EXPECT_NEAR(points[0].face_weight, want_weight, 1e-6) << "tilt " << tilt;
+        // Step 6: a face on a face, even or uneven (beyond the band's end the energy blend
+        // beta is 0), has face weight 1 this far below 5 degrees of tilt.
+        EXPECT_NEAR(points[0].face_weight, 1.0, 1e-9) << "tilt " << tilt;
         if (flat) {
           ASSERT_LT(r, 0.01);
           // The deepest point: at this tilt the whole face lies within kDeepestTaper of the
@@ -836,3 +837,54 @@ TEST(ContactReduction, TriangleIndexOutOfRangeThrows) {
 }
 
 } // namespace
+
+// Step 6's face weight: a face on a face is a face however it is pressed (the cube tilted so
+// little that the whole face still overlaps, but unevenly beyond the flat band: the energy
+// blend beta is 0 there, the face weight 1; see SlightlyTiltedFaceSlidesFromTheAreaCentreToTheLowEdge),
+// falls smoothly between 5 and 10 degrees of tilt, and a ball on near-flat facets (a soft
+// contact over many facets whose slopes turn under it) is a point: free to roll and to twist.
+TEST(ContactReductionPoint, FaceWeightIsOneForAFaceOnAFaceAndZeroForABall) {
+  const Vector3d xy(0.1e-3, -0.2e-3, 0);
+  const Mesh b = plane(1.5 * kSide, 4);
+  for (const double degrees : {6.0, 7.5, 9.0}) {
+    Mesh a;
+    place_cube(a, 2, xy, 0.2 * kLayer,
+               Eigen::AngleAxisd(degrees * M_PI / 180.0, Vector3d::UnitY()).toRotationMatrix());
+    const auto points = tri::reduce_contacts(contacts_by(2, a, b), soa_of(a), kEps, soa_of(b),
+                                             kEps, params_for(kSide / 2, 3 * kSide / 4));
+    ASSERT_EQ(points.size(), 1u);
+    ASSERT_GT(points[0].patch_area, 0.0) << degrees;
+    // The polygons' overlap slope is about 2 tan(tilt / 2) everywhere (measured on their
+    // bisector plane): the weight is the smooth step in it from 2 tan(2.5 deg) (1) to
+    // 2 tan(5 deg) (0), to within 1e-2.
+    const double s = (std::tan(0.5 * degrees * M_PI / 180.0) - std::tan(2.5 * M_PI / 180.0)) /
+                     (std::tan(5.0 * M_PI / 180.0) - std::tan(2.5 * M_PI / 180.0));
+    const double want = 1.0 - s * s * (3.0 - 2.0 * s);
+    EXPECT_NEAR(points[0].face_weight, want, 1e-2) << degrees << " degrees";
+    EXPECT_GT(points[0].face_weight, 0.0);
+    EXPECT_LT(points[0].face_weight, 1.0);
+  }
+  // A 1280-triangle ball of radius 2 mm, 50 um deep in the layers: patch of about 0.45 mm
+  // radius, its facets' slopes spread by about 0.1.
+  const double radius = 0.002;
+  const tri::TriangleMesh ico = tri_test::icosphere(3);
+  Mesh ball;
+  double low = std::numeric_limits<double>::infinity();
+  for (const auto &t : ico.triangles) {
+    Tri tr;
+    for (int k = 0; k < 3; ++k) {
+      tr.v[k] = radius * ico.vertices[t[k]];
+      low = std::min(low, tr.v[k].z());
+    }
+    ball.push_back(tr);
+  }
+  for (Tri &t : ball)
+    for (Vector3d &v : t.v)
+      v += Vector3d(xy.x(), xy.y(), kLayer - 5e-5 - low);
+  const double edge = 0.131 * radius;
+  const auto points = tri::reduce_contacts(contacts_by(2, ball, b), soa_of(ball), kEps, soa_of(b),
+                                           kEps, params_for(edge / std::sqrt(2.0), 3 * kSide / 4));
+  ASSERT_EQ(points.size(), 1u);
+  EXPECT_GT(points[0].patch_area, 0.0); // near-flat facets have polygons ...
+  EXPECT_EQ(points[0].face_weight, 0.0); // ... but the ball is not a face
+}
