@@ -192,16 +192,6 @@ void and_near_box(const TriangleBoxes &boxes, const double lo[3], const double h
   }
 }
 
-int compress(int *index, int n) {
-  int count = 0;
-  for (int t = 0; t < n; ++t) {
-    const int m = index[t];
-    index[count] = t;
-    count += m;
-  }
-  return count;
-}
-
 } // namespace
 
 int cull_triangle_pairs_two_frames(const TriangleBoxes &a, const TriangleBoxes &b,
@@ -220,14 +210,14 @@ int cull_triangle_pairs_two_frames(const TriangleBoxes &a, const TriangleBoxes &
     std::fill(mask_b, mask_b + nb, 1);
   and_near_box(b, a.all_lo, a.all_hi, margin, false, mask_b);
   and_near_box(fb, fa.all_lo, fa.all_hi, frame_margin, false, mask_b);
-  const int sb = compress(s.index_b.data(), nb);
+  const int sb = compress_mask(s.index_b.data(), nb);
   if (sb == 0)
     return 0;
   std::int32_t *mask_a = reinterpret_cast<std::int32_t *>(s.index_a.data());
   std::fill(mask_a, mask_a + na, 1);
   and_near_box(a, b.all_lo, b.all_hi, margin, true, mask_a);
   and_near_box(fa, fb.all_lo, fb.all_hi, frame_margin, true, mask_a);
-  const int sa = compress(s.index_a.data(), na);
+  const int sa = compress_mask(s.index_a.data(), na);
   if (sa == 0)
     return 0;
 
