@@ -53,19 +53,59 @@ struct CheckResult {
   P3 pa, pb;
 };
 
-// Closest point of the plane of triangle (v0, v1, v2) to p, valid when its foot lies in the
-// closed triangle and the triangle is not a sliver; dist2 is +inf otherwise. `n` is
-// (v1 - v0) x (v2 - v0) and `face_ok` says whether the triangle is not a sliver: both are
-// computed once per triangle by the caller.
-TRI_INLINE double point_face_dist2(P3 p, P3 v0, P3 e1, P3 e2, P3 n, bool face_ok, P3 &foot) {
-  const double nn = dot(n, n);
-  const double inv_nn = face_ok ? 1.0 / nn : 0.0;
-  const P3 w = p - v0;
-  const double u = dot(n, cross(w, e2)) * inv_nn; // weight of v1
-  const double v = dot(n, cross(e1, w)) * inv_nn; // weight of v2
-  const double h = dot(w, n) * inv_nn;            // signed height in units of |n|
-  foot = p - h * n;
-  const bool inside = face_ok & (u >= 0.0) & (v >= 0.0) & (u + v <= 1.0);
+// A triangle prepared for the checks: corner v0, edges e1 = v1 - v0, e2 = v2 - v0, the
+// (unnormalised) normal n = e1 x e2, its longest squared edge l2, whether it is not a
+// sliver, and the in-plane edge normals m1 = n x e1 (edge v0 v1), m2 = e2 x n (edge v2 v0),
+// m3 = n x (e2 - e1) (edge v1 v2), each pointing inwards: a point of the plane is in the
+// closed triangle iff m1.(p - v0), m2.(p - v0), m3.(p - v1) are all >= 0. Every function
+// below takes faces made by face_of, so all agree on what a sliver is.
+//
+// Accuracy on slivers (why n and the inside test are computed this way): the plain cross
+// product e1 x e2 is rounded by ~1e-16 |e1| |e2| in every direction, a tilt of ~1e-16 l2 / |n|
+// of the normal, which moved the foot of a point above a sliver of height 1e-7 of its length
+// by ~1e-9 of that length (measured: 3e-10 at height 1e-7, 1.2e-9 at 2e-8;
+// test_triangle_distance_slivers.cpp). Crossing e1 with the part of e2 normal to it instead
+// rounds only by ~1e-16 |n| (the subtraction's own rounding tilts n about e1, by which the
+// height of a point of the triangle changes by ~1e-16 |e2|), so the normal's direction is
+// good to ~1e-16 whatever the shape. Likewise u + v <= 1 from barycentric weights about v0
+// misplaced the edge v1 v2 by ~1e-16 l2 / |v2 - v1| when that edge is short; the edge tests
+// about each edge's own end point misplace an edge by ~1e-16 of the distance to it only.
+struct Face {
+  P3 v0, e1, e2, n, m1, m2, m3;
+  double l2;
+  bool ok;
+};
+TRI_INLINE Face face_of(const P3 v[3]) {
+  Face f;
+  f.v0 = v[0];
+  f.e1 = v[1] - v[0];
+  f.e2 = v[2] - v[0];
+  const P3 e3 = v[2] - v[1];
+  const double a = dot(f.e1, f.e1);
+  const double mu = a > kTinySquared ? dot(f.e1, f.e2) / a : 0.0;
+  f.n = cross(f.e1, f.e2 - mu * f.e1); // = e1 x e2 in exact arithmetic, for any mu
+  f.l2 = std::max(a, std::max(dot(f.e2, f.e2), dot(e3, e3)));
+  f.ok = dot(f.n, f.n) > kSliverRatio * kSliverRatio * f.l2 * f.l2;
+  f.m1 = cross(f.n, f.e1);
+  f.m2 = cross(f.e2, f.n);
+  f.m3 = cross(f.n, e3);
+  return f;
+}
+
+// Is the point v0 + w of the plane of f in the closed triangle (edge tests of Face)?
+TRI_INLINE bool in_face(const Face &f, P3 w) {
+  return (dot(f.m1, w) >= 0.0) & (dot(f.m2, w) >= 0.0) & (dot(f.m3, w - f.e1) >= 0.0);
+}
+
+// Closest point of the plane of face f to p, valid when its foot lies in the closed triangle
+// and the triangle is not a sliver; dist2 is +inf otherwise.
+TRI_INLINE double point_face_dist2(P3 p, const Face &f, P3 &foot) {
+  const double nn = dot(f.n, f.n);
+  const double inv_nn = f.ok ? 1.0 / nn : 0.0;
+  const P3 w = p - f.v0;
+  const double h = dot(w, f.n) * inv_nn; // signed height in units of |n|
+  foot = p - h * f.n;
+  const bool inside = f.ok & in_face(f, w);
   const double d2 = h * h * nn;
   return inside ? d2 : INFINITY;
 }
@@ -98,26 +138,6 @@ TRI_INLINE double segment_segment_dist2(P3 p1, P3 d1, P3 p2, P3 d2, P3 &c1, P3 &
   return dot(g, g);
 }
 
-// A triangle prepared for the checks: corner v0, edges e1 = v1 - v0, e2 = v2 - v0, the
-// (unnormalised) normal n = e1 x e2, its longest squared edge l2 and whether it is not a
-// sliver. Every function below takes faces made by face_of, so all agree on what a sliver is.
-struct Face {
-  P3 v0, e1, e2, n;
-  double l2;
-  bool ok;
-};
-TRI_INLINE Face face_of(const P3 v[3]) {
-  Face f;
-  f.v0 = v[0];
-  f.e1 = v[1] - v[0];
-  f.e2 = v[2] - v[0];
-  const P3 e3 = v[2] - v[1];
-  f.n = cross(f.e1, f.e2);
-  f.l2 = std::max(dot(f.e1, f.e1), std::max(dot(f.e2, f.e2), dot(e3, e3)));
-  f.ok = dot(f.n, f.n) > kSliverRatio * kSliverRatio * f.l2 * f.l2;
-  return f;
-}
-
 // The 15 checks of one triangle pair. `a` and `b` hold the three vertices of each triangle.
 // Returns the smallest squared distance and its closest points; ties keep the first check in
 // the fixed order: vertices of a on face b, vertices of b on face a, then edge pairs (i, j).
@@ -129,7 +149,7 @@ TRI_INLINE CheckResult fifteen_checks(const P3 a[3], const P3 b[3], const Face &
 #pragma GCC unroll 3
   for (int k = 0; k < 3; ++k) {
     P3 foot;
-    const double d2 = point_face_dist2(a[k], fb.v0, fb.e1, fb.e2, fb.n, fb.ok, foot);
+    const double d2 = point_face_dist2(a[k], fb, foot);
     const bool better = d2 < best.dist2;
     best.dist2 = better ? d2 : best.dist2;
     best.pa = select(better, a[k], best.pa);
@@ -138,7 +158,7 @@ TRI_INLINE CheckResult fifteen_checks(const P3 a[3], const P3 b[3], const Face &
 #pragma GCC unroll 3
   for (int k = 0; k < 3; ++k) {
     P3 foot;
-    const double d2 = point_face_dist2(b[k], fa.v0, fa.e1, fa.e2, fa.n, fa.ok, foot);
+    const double d2 = point_face_dist2(b[k], fa, foot);
     const bool better = d2 < best.dist2;
     best.dist2 = better ? d2 : best.dist2;
     best.pa = select(better, foot, best.pa);
@@ -158,21 +178,16 @@ TRI_INLINE CheckResult fifteen_checks(const P3 a[3], const P3 b[3], const Face &
   return best;
 }
 
-// Does the edge p -> q cross the plane of triangle (v0, n) strictly (end points on opposite
-// sides) at a point of the closed triangle? This is the one way two triangles can intersect
-// that the 15 checks do not see (they report the distance of the edges, not 0). `n` and
-// `face_ok` as for point_face_dist2; slivers are never pierced (their edges are checked).
-// `hit` receives the crossing point.
-TRI_INLINE bool edge_pierces_face(P3 p, P3 q, P3 v0, P3 e1, P3 e2, P3 n, bool face_ok, P3 &hit) {
-  const double sp = dot(p - v0, n), sq = dot(q - v0, n);
+// Does the edge p -> q cross the plane of face f strictly (end points on opposite sides) at
+// a point of the closed triangle? This is the one way two triangles can intersect that the
+// 15 checks do not see (they report the distance of the edges, not 0). Slivers are never
+// pierced (their edges are checked). `hit` receives the crossing point.
+TRI_INLINE bool edge_pierces_face(P3 p, P3 q, const Face &f, P3 &hit) {
+  const double sp = dot(p - f.v0, f.n), sq = dot(q - f.v0, f.n);
   const bool crosses = ((sp > 0.0) & (sq < 0.0)) | ((sp < 0.0) & (sq > 0.0));
   const double t = crosses ? sp / (sp - sq) : 0.0;
   hit = p + t * (q - p);
-  const double inv_nn = face_ok ? 1.0 / dot(n, n) : 0.0;
-  const P3 w = hit - v0;
-  const double u = dot(n, cross(w, e2)) * inv_nn;
-  const double v = dot(n, cross(e1, w)) * inv_nn;
-  return crosses & face_ok & (u >= 0.0) & (v >= 0.0) & (u + v <= 1.0);
+  return crosses & f.ok & in_face(f, hit - f.v0);
 }
 
 } // namespace geom
@@ -187,8 +202,8 @@ TRI_INLINE bool any_edge_pierces(const P3 a[3], const P3 b[3], const Face &fa, c
 #pragma GCC unroll 3
   for (int k = 0; k < 3; ++k) {
     P3 hit;
-    pierced |= edge_pierces_face(a[k], a[(k + 1) % 3], fb.v0, fb.e1, fb.e2, fb.n, fb.ok, hit);
-    pierced |= edge_pierces_face(b[k], b[(k + 1) % 3], fa.v0, fa.e1, fa.e2, fa.n, fa.ok, hit);
+    pierced |= edge_pierces_face(a[k], a[(k + 1) % 3], fb, hit);
+    pierced |= edge_pierces_face(b[k], b[(k + 1) % 3], fa, hit);
   }
   return pierced;
 }

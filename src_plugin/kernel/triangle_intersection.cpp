@@ -74,7 +74,7 @@ int edge_face_crossings(const Eigen::Vector3d a[3], const Eigen::Vector3d b[3],
     const Face f = face_of(face);
     for (int k = 0; k < 3; ++k) {
       P3 hit;
-      if (edge_pierces_face(edges[k], edges[(k + 1) % 3], f.v0, f.e1, f.e2, f.n, f.ok, hit))
+      if (edge_pierces_face(edges[k], edges[(k + 1) % 3], f, hit))
         points[count++] = to_eigen(hit);
     }
   }
