@@ -99,10 +99,11 @@ Eigen::Vector3d new_separating_axis(const Body &a, const Body &b, double cutoff,
 }
 
 // Marks in scratch.wall_apart the triangles of `wall` whose plane has all of `particle`'s
-// vertices more than the cutoff (plus separating_axis.h's slack) on one side; true if that
-// is every triangle. O(wall triangles x particle vertices).
+// vertices more than `margin` (plus separating_axis.h's slack) on one side; true if every
+// triangle's plane has them more than `cutoff` (<= margin) beyond. O(wall triangles x particle
+// vertices).
 bool walls_apart_by_planes(const TriangleSoA &particle, const TriangleSoA &wall, double cutoff,
-                           InteractionScratch &scratch) {
+                           double margin, InteractionScratch &scratch) {
   const int n = wall.num_triangles();
   scratch.wall_apart.assign(static_cast<std::size_t>(n), 0);
   compute_triangle_planes(wall, scratch.wall_planes);
@@ -114,11 +115,10 @@ bool walls_apart_by_planes(const TriangleSoA &particle, const TriangleSoA &wall,
     if (normal == Eigen::Vector3d::Zero())
       continue;
     const Extent e = soa_extent(particle, normal);
-    const double slack = kSeparationSlackRatio * (e.magnitude + wall_magnitude + std::fabs(cutoff));
-    const double beyond = cutoff + slack;
-    const bool off = e.lo - p.offset[t] >= beyond || p.offset[t] - e.hi >= beyond;
-    scratch.wall_apart[t] = off;
-    apart += off;
+    const double slack = kSeparationSlackRatio * (e.magnitude + wall_magnitude + std::fabs(margin));
+    const double gap = std::max(e.lo - p.offset[t], p.offset[t] - e.hi);
+    scratch.wall_apart[t] = gap >= margin + slack;
+    apart += gap >= cutoff + slack;
   }
   return n > 0 && apart == n;
 }
@@ -129,34 +129,65 @@ PairForceResult body_interaction(const Body &a, const Body &b, const Interaction
                                  double dt, double *history, InteractionScratch &scratch,
                                  ContactStats &stats, SeparationCache cache) {
   const double cutoff = a.epsilon + b.epsilon;
-  if (cache.axis && (cache.axis[0] != 0.0 || cache.axis[1] != 0.0 || cache.axis[2] != 0.0) &&
-      separated_along(*a.triangles, *b.triangles, Eigen::Vector3d(cache.axis), cutoff)) {
-    // Exactly what the search below returns for a pair without contacts.
+  const RigidPose *pose_a = &a.pose, *pose_b = b.is_wall() ? nullptr : &b.pose;
+  CandidateCache *kept = s.coherence > 0.0 ? cache.candidates : nullptr;
+  auto apart = [&]() { // exactly what the search below returns for a pair without contacts
     ++stats.bodies_separated;
     scratch.points.clear();
     return pair_contact_force(scratch.points, a.state, b.state, s.coefficients, dt, history);
+  };
+  // A gap kept from an earlier step that the motion since cannot have closed (O(1)), then the
+  // kept axis (O(vertices)).
+  if (kept && kept->proves_apart(pose_a, *a.triangles, pose_b, *b.triangles, cutoff))
+    return apart();
+  if (cache.axis && (cache.axis[0] != 0.0 || cache.axis[1] != 0.0 || cache.axis[2] != 0.0)) {
+    const double gap =
+        proven_gap(*a.triangles, *b.triangles, Eigen::Vector3d(cache.axis), cutoff);
+    if (gap >= cutoff) {
+      if (kept && cache.update)
+        kept->keep_gap(pose_a, *a.triangles, pose_b, *b.triangles, gap);
+      return apart();
+    }
   }
-  // A wall patch: its triangles whose plane a lies beyond (either side) cannot touch a; if
-  // that is all of them, a touches nothing, also where no single axis separates a from the
-  // patch (a floor and a side wall around the particle).
-  const std::uint8_t *skip = nullptr;
-  if (b.is_wall() && s.distance.cull && s.distance.tight_cull &&
-      walls_apart_by_planes(*a.triangles, *b.triangles, cutoff, scratch)) {
-    ++stats.bodies_separated;
-    scratch.points.clear();
-    return pair_contact_force(scratch.points, a.state, b.state, s.coefficients, dt, history);
-  }
-  if (b.is_wall() && s.distance.cull && s.distance.tight_cull)
-    skip = scratch.wall_apart.data();
+  // Kept candidates that still cover the bodies replace the search (candidate_cache.h).
+  const bool coherent =
+      kept && s.distance.cull && s.distance.kernel != DistanceKernel::BatchedHybrid;
   scratch.triangle_contacts.clear();
-  find_triangle_contacts(*a.triangles, a.epsilon, *b.triangles, b.epsilon, s.distance,
-                         scratch.triangle_contacts, stats, scratch.distance, skip);
+  if (coherent && cache.candidates->covers(pose_a, *a.triangles, pose_b, *b.triangles, cutoff)) {
+    ++stats.candidates_kept;
+    contacts_among_candidates(*a.triangles, a.epsilon, *b.triangles, b.epsilon, s.distance,
+                              cache.candidates->pairs(), cache.candidates->count(),
+                              scratch.triangle_contacts, stats, scratch.distance);
+  } else {
+    const double reach = coherent ? s.coherence * cutoff : 0.0;
+    const double margin = cutoff + reach;
+    // A wall patch: its triangles whose plane a lies beyond (either side) cannot touch a; if
+    // that is all of them, a touches nothing, also where no single axis separates a from the
+    // patch (a floor and a side wall around the particle).
+    const std::uint8_t *skip = nullptr;
+    if (b.is_wall() && s.distance.cull && s.distance.tight_cull) {
+      if (walls_apart_by_planes(*a.triangles, *b.triangles, cutoff, margin, scratch))
+        return apart();
+      skip = scratch.wall_apart.data();
+    }
+    const int count =
+        find_candidate_pairs(*a.triangles, *b.triangles, margin, s.distance, scratch.distance, skip);
+    if (coherent && cache.update)
+      cache.candidates->keep(pose_a, *a.triangles, pose_b, *b.triangles, cutoff, reach,
+                             scratch.distance.pairs.data(), count);
+    contacts_among_candidates(*a.triangles, a.epsilon, *b.triangles, b.epsilon, s.distance,
+                              scratch.distance.pairs.data(), count, scratch.triangle_contacts,
+                              stats, scratch.distance);
+  }
   if (cache.axis && cache.update) {
     const Eigen::Vector3d axis = scratch.triangle_contacts.empty()
                                      ? new_separating_axis(a, b, cutoff, scratch.distance)
                                      : Eigen::Vector3d::Zero();
     for (int d = 0; d < 3; ++d)
       cache.axis[d] = axis[d];
+    if (kept && axis != Eigen::Vector3d::Zero())
+      kept->keep_gap(pose_a, *a.triangles, pose_b, *b.triangles,
+                     proven_gap(*a.triangles, *b.triangles, axis, cutoff));
   }
   if (scratch.triangle_contacts.empty()) { // the reduction of nothing needs no parameters
     scratch.points.clear();

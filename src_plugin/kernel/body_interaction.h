@@ -5,6 +5,7 @@
 // style and the wall fix cannot drift apart.
 #pragma once
 
+#include "candidate_cache.h"
 #include "contact_force.h"
 #include "particle_contacts.h"
 #include "penetration_depth.h"
@@ -20,6 +21,10 @@ struct InteractionSettings {
   ContactOptions distance;                     // kernel, culling, threads inside the pair
   ReductionMethod reduction = ReductionMethod::clusters;
   ContactCoefficients coefficients;            // per type pair, filled by the host
+  // Kept candidates (candidate_cache.h): searched with a margin of (1 + coherence) x the
+  // cutoff and reused while the bodies move less than coherence x the cutoff; 0: none kept.
+  // Not with the batched kernel, whose result for a pair depends on its batch.
+  double coherence = 0.05;
 };
 
 // Per-thread scratch, owned by the caller, so the force loop allocates nothing once warmed up.
@@ -50,6 +55,7 @@ struct Body {
   // infinity for a wall patch
   double thinnest = std::numeric_limits<double>::infinity();
   BodyState state;                        // mass <= 0 for a wall
+  RigidPose pose; // a particle: x, orientation and bounding radius of `triangles`; unused for a wall
 
   bool is_wall() const { return !(state.mass > 0.0); }
 };
@@ -64,9 +70,12 @@ struct Body {
 // `update` is set, a new axis is stored if it proves the bodies apart (the direction between
 // the closest points tested, between the centres, or along the nearest face normals), else
 // zero. A contact clears it. Values flip sign with the roles of a and b.
+// `candidates`: the pair's kept triangle-pair candidates (candidate_cache.h), null for none;
+// used when they still cover the bodies, else searched afresh (and kept, with `update`).
 struct SeparationCache {
   double *axis = nullptr; // null: no cache kept
   bool update = true;     // false: read only (LIGGGHTS's setup of a run)
+  CandidateCache *candidates = nullptr;
 };
 
 // Forces between a (a particle) and b (a particle or a wall) for one time step of length dt.

@@ -141,6 +141,11 @@ std::vector<StatColumn> make_columns() {
                            "deepest intersection past the soft layers as a fraction of the "
                            "resolvable depth (> 1 stops the run)",
                            [](Tally &t) { return &t.max_depth_of_limit; }));
+  // Kept candidates (candidate_cache.h), appended.
+  c.push_back(count_column("candidates_kept",
+                           "body pairs of pairs_checked whose triangle pairs came from their kept "
+                           "candidates, without a cull (the bodies moved less than its reach)",
+                           [](Tally &t, int) { return &t.distance.candidates_kept; }));
   return c;
 }
 

@@ -20,6 +20,7 @@ ContactStats &ContactStats::operator+=(const ContactStats &o) {
   triangle_pairs_culled += o.triangle_pairs_culled;
   contacts += o.contacts;
   bodies_separated += o.bodies_separated;
+  candidates_kept += o.candidates_kept;
   HybridCounters::operator+=(o);
   return *this;
 }
@@ -125,17 +126,28 @@ void run_kernel(const TriangleSoA &a, const TriangleSoA &b, const ContactOptions
   }
 }
 
-} // namespace
-
-void find_triangle_contacts(const TriangleSoA &a, double eps_a, const TriangleSoA &b, double eps_b,
-                            const ContactOptions &opt, std::vector<TriangleContact> &out,
-                            ContactStats &stats, ContactWorkspace &ws, const std::uint8_t *skip_b) {
+void check_options(const ContactOptions &opt) {
   if (!penalty_iterations_supported(opt.newton_iterations))
     throw std::invalid_argument("find_triangle_contacts: unsupported newton_iterations");
   if (opt.batch_size < 1)
     throw std::invalid_argument("find_triangle_contacts: batch_size must be >= 1");
+}
+
+} // namespace
+
+int find_candidate_pairs(const TriangleSoA &a, const TriangleSoA &b, double margin,
+                         const ContactOptions &opt, ContactWorkspace &ws,
+                         const std::uint8_t *skip_b) {
+  return collect_candidates(a, b, margin, opt.cull, opt.tight_cull, ws, skip_b);
+}
+
+void contacts_among_candidates(const TriangleSoA &a, double eps_a, const TriangleSoA &b,
+                               double eps_b, const ContactOptions &opt,
+                               const TrianglePairIndex *pairs, int count,
+                               std::vector<TriangleContact> &out, ContactStats &stats,
+                               ContactWorkspace &ws) {
+  check_options(opt);
   const double cutoff = eps_a + eps_b;
-  const int count = collect_candidates(a, b, cutoff, opt.cull, opt.tight_cull, ws, skip_b);
   ws.tested = count;
   stats.triangle_pairs_tested += count;
   stats.triangle_pairs_culled +=
@@ -149,7 +161,6 @@ void find_triangle_contacts(const TriangleSoA &a, double eps_a, const TriangleSo
   hs.tolerance = opt.tolerance_ratio * std::min(eps_a, eps_b);
   hs.cutoff = cutoff;
 
-  const TrianglePairIndex *pairs = ws.pairs.data();
   TrianglePairDistance *results = ws.results.data();
   HybridCounters counters;
   // Work is split only at multiples of `unit`, so batches stay whole and blocks full.
@@ -204,6 +215,13 @@ void find_triangle_contacts(const TriangleSoA &a, double eps_a, const TriangleSo
                    r.intersecting, r.penetration_depth});
     ++stats.contacts;
   }
+}
+
+void find_triangle_contacts(const TriangleSoA &a, double eps_a, const TriangleSoA &b, double eps_b,
+                            const ContactOptions &opt, std::vector<TriangleContact> &out,
+                            ContactStats &stats, ContactWorkspace &ws, const std::uint8_t *skip_b) {
+  const int count = find_candidate_pairs(a, b, eps_a + eps_b, opt, ws, skip_b);
+  contacts_among_candidates(a, eps_a, b, eps_b, opt, ws.pairs.data(), count, out, stats, ws);
 }
 
 void find_triangle_contacts(const TriangleSoA &a, double eps_a, const TriangleSoA &b, double eps_b,

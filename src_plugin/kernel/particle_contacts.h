@@ -87,6 +87,8 @@ struct ContactStats : HybridCounters {
   long long contacts = 0;              // pairs reported
   long long bodies_separated = 0;      // body pairs proven apart without a search (a kept
                                        // axis, wall planes: body_interaction.h)
+  long long candidates_kept = 0;       // body pairs searched among kept candidates
+                                       // (candidate_cache.h), not culled afresh
 
   ContactStats &operator+=(const ContactStats &o);
 };
@@ -116,6 +118,22 @@ void find_triangle_contacts(const TriangleSoA &a, double eps_a, const TriangleSo
                             const ContactOptions &opt, std::vector<TriangleContact> &out,
                             ContactStats &stats, ContactWorkspace &ws,
                             const std::uint8_t *skip_b = nullptr);
+
+// The two steps of the call above, for callers that keep candidates between steps
+// (candidate_cache.h). find_candidate_pairs fills ws.pairs[0, count) (returned) with the
+// triangle pairs the cull keeps for `margin` (every pair closer than margin is among them),
+// in row-major (tri_a, tri_b) order. contacts_among_candidates runs the distance kernel on
+// pairs[0, count) (row-major order, any superset of the pairs closer than eps_a + eps_b) and
+// appends those closer than eps_a + eps_b: each pair's result does not depend on the other
+// pairs in the list, so the contacts are the call above's, bit for bit.
+int find_candidate_pairs(const TriangleSoA &a, const TriangleSoA &b, double margin,
+                         const ContactOptions &opt, ContactWorkspace &ws,
+                         const std::uint8_t *skip_b = nullptr);
+void contacts_among_candidates(const TriangleSoA &a, double eps_a, const TriangleSoA &b,
+                               double eps_b, const ContactOptions &opt,
+                               const TrianglePairIndex *pairs, int count,
+                               std::vector<TriangleContact> &out, ContactStats &stats,
+                               ContactWorkspace &ws);
 
 // The same with a workspace of its own (allocates on every call: tests, tools, one-off uses).
 void find_triangle_contacts(const TriangleSoA &a, double eps_a, const TriangleSoA &b, double eps_b,

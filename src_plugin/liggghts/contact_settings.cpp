@@ -48,7 +48,8 @@ bool parse_contact_keyword(int narg, char **arg, int *i, ContactSettings &s,
   const std::string key = arg[*i];
   static const char *known[] = {"kernel", "newton_iters", "batch", "parallel", "cull", "reduction",
                                 "tangential", "absolute_damping", "limitForce",
-                                "tangential_damping", "model", "separation"};
+                                "tangential_damping", "model", "separation",
+                                "coherence"};
   bool is_known = false;
   for (const char *k : known)
     is_known = is_known || key == k;
@@ -105,6 +106,13 @@ bool parse_contact_keyword(int narg, char **arg, int *i, ContactSettings &s,
     } else {
       fail(error, style, "'cull' expects yes, boxes or no, got '" + v + "'");
     }
+  } else if (key == "coherence") {
+    char *end = nullptr;
+    const double r = v == "no" || v == "off" ? 0.0 : std::strtod(value, &end);
+    if (end && (*end != '\0' || !(r > 0.0) || !(r <= 10.0)))
+      fail(error, style, "'coherence' expects no or a reach in (0, 10] times the contact cutoff, "
+                         "got '" + v + "'");
+    s.interaction.coherence = r;
   } else if (key == "separation") {
     s.separation = on_off(key, value, error, style);
   } else if (key == "reduction") {

@@ -11,6 +11,11 @@
 //                                      none (no); the contacts are the same
 //   separation yes|no                  keep each body pair's last separating axis and verify it
 //                                      before any triangle pair (default yes; no: search always)
+//   coherence R|no                     keep each body pair's triangle-pair candidates, culled
+//                                      with a margin of (1 + R) x the contact cutoff, and
+//                                      reuse them while the bodies move less than R x the
+//                                      cutoff (candidate_cache.h; default 0.05; no: cull every
+//                                      step); the contacts are the same
 //   reduction clusters|paper|none      contact reduction (default clusters; see
 //                                      contact_reduction.h)
 //   tangential history|no_history      (default history)

@@ -288,6 +288,9 @@ tri::Body FixTriParticles::body(int i) const {
   b.state.v = Eigen::Vector3d(atom->v[i][0], atom->v[i][1], atom->v[i][2]);
   b.state.omega = Eigen::Vector3d(atom->omega[i][0], atom->omega[i][1], atom->omega[i][2]);
   b.state.mass = atom->rmass[i];
+  b.pose.x = b.state.x;
+  b.pose.q = orientation(i);
+  b.pose.radius = s.bounding_radius;
   return b;
 }
 

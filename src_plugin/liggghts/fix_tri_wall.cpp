@@ -128,6 +128,7 @@ void FixTriWall::post_force(int) { compute(true); }
 
 void FixTriWall::collect_tasks() {
   ntasks_ = 0;
+  candidates_.begin_step();
   const int nlocal = atom->nlocal;
   const int *mask = atom->mask;
   std::vector<std::vector<std::pair<int, int>>> &near = near_; // atom -> (global id, local tri)
@@ -164,8 +165,14 @@ void FixTriWall::collect_tasks() {
       task.triangles.clear();
       for (const auto &p : near[a])
         task.triangles.push_back(p.second);
+      task.candidates =
+          settings_.interaction.coherence > 0.0
+              ? candidates_.entry(tri_liggghts::CandidateStore::wall_key(atom->tag[a],
+                                                                         static_cast<int>(m)))
+              : nullptr;
     }
   }
+  candidates_.end_step();
 }
 
 tri::PairForceResult FixTriWall::interact(int k, double dt, bool update_history,
@@ -215,7 +222,7 @@ tri::PairForceResult FixTriWall::interact(int k, double dt, bool update_history,
                        : history_[a] + task.mesh * tri::kHistoryDoubles;
   tri::HistoryView history(stored, false, update_history);
   const tri::SeparationCache cache{settings_.separation ? axis(a, task.mesh) : nullptr,
-                                   update_history};
+                                   update_history, task.candidates};
   return tri::body_interaction(particle, wall, s, dt, history.data(), scratch, stats, cache);
 }
 
@@ -309,5 +316,5 @@ double FixTriWall::memory_usage() {
   for (const Task &task : tasks_)
     bytes += task.triangles.capacity() * sizeof(int);
   bytes += static_cast<double>(task_atoms_.capacity() * sizeof(int));
-  return bytes + static_cast<double>(engine_.bytes());
+  return bytes + static_cast<double>(engine_.bytes()) + static_cast<double>(candidates_.bytes());
 }

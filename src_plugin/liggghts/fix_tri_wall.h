@@ -24,6 +24,7 @@
 
 #include "fix.h"
 
+#include "candidate_store.h"
 #include "contact_settings.h"
 #include "interaction_engine.h"
 #include "material_table.h"
@@ -60,6 +61,7 @@ private:
   struct Task {
     int atom, mesh;
     std::vector<int> triangles; // mesh-local indices, ordered by global triangle id
+    tri::CandidateCache *candidates = nullptr; // kept candidates of (atom, mesh), or null
   };
   std::vector<class FixMeshSurface *> meshes_;
   std::vector<std::string> mesh_ids_;
@@ -79,6 +81,7 @@ private:
   std::vector<std::vector<std::pair<int, int>>> near_;
   std::vector<tri::TriangleSoA> patches_;
   tri::InteractionEngine engine_;
+  tri_liggghts::CandidateStore candidates_;
   int board_slot_ = -1;
   double seconds_ = 0.0;
 

@@ -66,8 +66,10 @@ void PairTriGran::collect_tasks() {
   const int dnum = this->dnum();
   const bool tangential =
       settings_.interaction.coefficients.tangential == tri::TangentialModel::history;
+  const bool coherent = settings_.interaction.coherence > 0.0;
   tasks_.clear();
   task_atoms_.clear();
+  candidates_.begin_step();
   for (int ii = 0; ii < list->inum; ++ii) {
     const int i = list->ilist[ii];
     const int *jlist = list->firstneigh[i];
@@ -89,11 +91,17 @@ void PairTriGran::collect_tasks() {
       }
       double *history = values && tangential ? values : nullptr;
       double *axis = values && settings_.separation ? values + axis_offset_ : nullptr;
-      tasks_.push_back({i, j, atom->tag[j] < atom->tag[i], history, axis, values, touching});
+      tri::CandidateCache *candidates =
+          coherent ? candidates_.entry(tri_liggghts::CandidateStore::pair_key(atom->tag[i],
+                                                                                atom->tag[j]))
+                   : nullptr;
+      tasks_.push_back(
+          {i, j, atom->tag[j] < atom->tag[i], history, axis, values, touching, candidates});
       task_atoms_.push_back(i);
       task_atoms_.push_back(j);
     }
   }
+  candidates_.end_step();
 }
 
 void PairTriGran::compute_force(int eflag, int vflag, int) {
@@ -121,7 +129,8 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
                 if (task.axis)
                   for (int d = 0; d < 3; ++d)
                     axis[d] = sign * task.axis[d];
-                tri::SeparationCache cache{task.axis ? axis : nullptr, update_history};
+                tri::SeparationCache cache{task.axis ? axis : nullptr, update_history,
+                                           task.candidates};
                 const tri::PairForceResult r =
                     tri::body_interaction(particles_->body(a), particles_->body(b), s, dt,
                                           history.data(), scratch, stats, cache);
@@ -174,5 +183,6 @@ void PairTriGran::report_failure() {
 
 double PairTriGran::memory_usage() {
   return PairGran::memory_usage() + static_cast<double>(engine_.bytes()) +
+         static_cast<double>(candidates_.bytes()) +
          static_cast<double>(tasks_.capacity() * sizeof(Task));
 }

@@ -17,7 +17,9 @@
 // and restarts. Requires newton_pair off, as every granular history pair style. The same
 // storage keeps each pair's last proven separating axis (body_interaction.h, three values
 // after the tangential ones), so a pair within reach that touches nothing costs O(vertices)
-// per step; the forces do not depend on it.
+// per step; the forces do not depend on it. Pairs within reach keep their triangle-pair
+// candidates between steps (candidate_store.h, keyword `coherence`); nor do the forces depend
+// on those.
 //
 // The loop, scratch, error capture and ordered sums are tri::InteractionEngine's (shared with
 // fix tri/wall); this style lists the pairs and says what its two bodies are. It publishes
@@ -36,6 +38,7 @@
 
 #include "pair_gran.h"
 
+#include "candidate_store.h"
 #include "contact_settings.h"
 #include "interaction_engine.h"
 #include "material_table.h"
@@ -64,6 +67,7 @@ private:
     double *axis;    // the pair's separating axis (3 values, as seen from (i, j)), or null
     double *touching_values; // all of this pair style's history values, or null
     int *touching;   // LIGGGHTS keeps (migrates, restarts) the history only where this is set
+    tri::CandidateCache *candidates; // the pair's kept candidates, or null
   };
   class FixTriParticles *particles_ = nullptr;
   int board_slot_ = -1;
@@ -72,6 +76,7 @@ private:
   std::vector<Task> tasks_;
   std::vector<int> task_atoms_; // both atoms of every task, for their world-frame triangles
   tri::InteractionEngine engine_;
+  tri_liggghts::CandidateStore candidates_;
   int axis_offset_ = -1; // where the separating axis starts in a pair's history values
 
   void collect_tasks();

@@ -88,6 +88,12 @@ BAD_CONTACT = {
                         r"Pair tri/gran: 'kernel' expects bf, penalty, hybrid or batched, got 'fast'"),
     "pair_newton_iters": ({"pairstyle": "tri/gran newton_iters 9"},
                           r"'newton_iters 9' is not one of the compiled iteration counts"),
+    "pair_bad_coherence": ({"pairstyle": "tri/gran coherence 0"},
+                           r"Pair tri/gran: 'coherence' expects no or a reach in \(0, 10\] times "
+                           r"the contact cutoff, got '0'"),
+    "wall_bad_coherence": ({"wall": "fix walls all tri/wall mesh cad coherence soon"},
+                           r"tri/wall: 'coherence' expects no or a reach in \(0, 10\] times "
+                           r"the contact cutoff, got 'soon'"),
     "pair_newton_on": ({"newton": "on off"},
                        r"Pair granular with shear history requires newton pair off"),
 }

@@ -1,22 +1,23 @@
-"""Kept separating axes and the tight cull (issue 12) change no trajectory. in.separation: 27
+"""Kept separating axes, kept candidates and the tight cull (issue 12) change no trajectory. in.separation: 27
 spinning rocks thrown into an open box (flights, rock-rock and rock-wall contacts, a forming
-pile). The default contact settings (kept separating axes, cull in two frames and face planes)
-must give bit for bit the final positions, velocities, spins, forces and orientations of
+pile). The default contact settings (kept separating axes and gaps, kept triangle-pair
+candidates, cull in two frames and face planes) must give bit for bit the final positions, velocities, spins, forces and orientations of
 
-  * `separation no cull boxes` (every pair searched, world-frame boxes only: the search before
-    issue 12), for pair tri/gran and fix tri/wall alike;
+  * `separation no coherence no cull boxes` (every pair searched, world-frame boxes only: the
+    search before issue 12), for pair tri/gran and fix tri/wall alike;
   * 2 OpenMP threads, 2 MPI ranks, and N steps + write_restart + N steps from the file (the
     axes travel in LIGGGHTS's contact history and in the wall fix's per-atom array);
 
-and the axes must do their work: body pairs proven apart (pairs_separated) and fewer triangle
-pairs tested than without them."""
+and the axes and candidates must do their work: body pairs proven apart (pairs_separated),
+searched among kept candidates (candidates_kept), and fewer triangle pairs tested than without
+them."""
 import os
 
 from decklib import check, last_frame, open_box, run_deck, thermo_rows, write_stl
 
 STEPS = 1000            # per half: contacts with the walls and between rocks well before 2 N
 STATS = ("pstats", "wstats")
-PLAIN = "kernel hybrid separation no cull boxes"
+PLAIN = "kernel hybrid separation no coherence no cull boxes"
 
 
 def run_phase(ctx, phase, variables, ranks=1, threads=1):
@@ -44,11 +45,12 @@ def total(rows, key):
 
 
 def test_separation_exact(ctx):
-    """Default settings against `separation no cull boxes`: bitwise equal trajectories, while
-    the default proves pairs apart and tests fewer triangle pairs."""
+    """Default settings against `separation no coherence no cull boxes`: bitwise equal
+    trajectories, while the default proves pairs apart, reuses kept candidates and tests fewer
+    triangle pairs."""
     rows, ref = run_phase(ctx, "default", {})
     plain_rows, plain = run_phase(ctx, "plain", {"contact": PLAIN})
-    check_same(ref, plain, "separation no cull boxes")
+    check_same(ref, plain, PLAIN)
     contacts = total(rows, "pstats.pairs_in_contact"), total(rows, "wstats.pairs_in_contact")
     check(contacts[0] > 0 and contacts[1] > 0,
           f"no contacts in the samples (rock-rock {contacts[0]}, rock-wall {contacts[1]})")
@@ -57,13 +59,17 @@ def test_separation_exact(ctx):
     plain_separated = (total(plain_rows, "pstats.pairs_separated")
                        + total(plain_rows, "wstats.pairs_separated"))
     check(plain_separated == 0, f"separation no still proves {plain_separated} pairs apart")
+    kept = total(rows, "pstats.candidates_kept"), total(rows, "wstats.candidates_kept")
+    check(kept[0] > 0 and kept[1] > 0, f"candidates_kept (pair, wall) {kept}")
+    plain_kept = total(plain_rows, "pstats.candidates_kept") + total(plain_rows, "wstats.candidates_kept")
+    check(plain_kept == 0, f"coherence no still keeps candidates for {plain_kept} pairs")
     tested = (total(rows, "pstats.triangle_pairs_tested")
               + total(rows, "wstats.triangle_pairs_tested"))
     plain_tested = (total(plain_rows, "pstats.triangle_pairs_tested")
                     + total(plain_rows, "wstats.triangle_pairs_tested"))
     check(tested < plain_tested, f"triangle pairs tested {tested} not below {plain_tested}")
     print(f"bitwise equal after {2 * STEPS} steps; pairs proven apart {separated[0]:g} (walls "
-          f"{separated[1]:g}) in the samples, triangle pairs tested {tested:g} against "
+          f"{separated[1]:g}), kept candidates {kept[0]:g} (walls {kept[1]:g}) in the samples, triangle pairs tested {tested:g} against "
           f"{plain_tested:g} without the axes")
 
 

@@ -7,6 +7,7 @@
 #include "random_rock.h"
 #include "separating_axis.h"
 #include "shape.h"
+#include "body_pair_helpers.h"
 #include "test_particles.h"
 
 #include <gtest/gtest.h>
@@ -19,55 +20,6 @@
 using namespace tri;
 using namespace tri_test;
 using Eigen::Vector3d;
-
-namespace {
-
-Shape rock(int ntri, std::uint64_t seed, double size = 0.004) {
-  RockParameters p;
-  p.ntri = ntri;
-  p.size = size;
-  p.seed = seed;
-  p.aspect_middle = 0.8;
-  p.aspect_short = 0.6;
-  return make_shape("rock", random_rock(p));
-}
-
-std::vector<TriangleContact> brute_force_contacts(const TriangleSoA &a, double ea,
-                                                  const TriangleSoA &b, double eb) {
-  ContactOptions opt;
-  opt.kernel = DistanceKernel::BruteForceScalar;
-  opt.cull = false;
-  std::vector<TriangleContact> out;
-  ContactStats stats;
-  find_triangle_contacts(a, ea, b, eb, opt, out, stats);
-  return out;
-}
-
-InteractionSettings settings(bool tight) {
-  InteractionSettings s;
-  s.distance.tight_cull = tight;
-  s.coefficients.kn = 2000;
-  s.coefficients.kt = 1000;
-  s.coefficients.gamman = 20;
-  s.coefficients.gammat = 10;
-  s.coefficients.mu = 0.5;
-  s.coefficients.limit_force = true;
-  return s;
-}
-
-void expect_bitwise(const PairForceResult &ref, const PairForceResult &got,
-                    const std::string &what) {
-  ASSERT_EQ(ref.force_a, got.force_a) << what;
-  ASSERT_EQ(ref.torque_a, got.torque_a) << what;
-  ASSERT_EQ(ref.torque_b, got.torque_b) << what;
-  ASSERT_EQ(ref.contacts_before, got.contacts_before) << what;
-  ASSERT_EQ(ref.contacts_after, got.contacts_after) << what;
-  ASSERT_EQ(ref.max_overlap, got.max_overlap) << what;
-  ASSERT_EQ(ref.min_distance, got.min_distance) << what;
-  ASSERT_EQ(ref.intersecting, got.intersecting) << what;
-}
-
-} // namespace
 
 TEST(SeparatingAxis, ProvenGapNeverExceedsATrianglePairDistance) {
   std::mt19937_64 rng(12);

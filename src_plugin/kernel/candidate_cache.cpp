@@ -1,0 +1,108 @@
+// Triangle-pair candidates kept between steps; the proof is in the header.
+#include "candidate_cache.h"
+
+#include "separating_axis.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace tri {
+
+void CandidateCache::record(const RigidPose *rigid, const TriangleSoA &t, Pose &out) {
+  out.rigid = rigid != nullptr;
+  if (rigid) {
+    out.pose = *rigid;
+    out.vertices.clear();
+    return;
+  }
+  const std::size_t n = t.x.size();
+  out.vertices.resize(3 * n);
+  for (std::size_t i = 0; i < n; ++i) {
+    out.vertices[3 * i] = t.x[i];
+    out.vertices[3 * i + 1] = t.y[i];
+    out.vertices[3 * i + 2] = t.z[i];
+  }
+}
+
+double CandidateCache::displacement(const Pose &then, const RigidPose *rigid, const TriangleSoA &t,
+                                    double &magnitude) {
+  constexpr double kUnbounded = std::numeric_limits<double>::infinity();
+  if (then.rigid != (rigid != nullptr))
+    return kUnbounded;
+  if (rigid) {
+    const RigidPose &p0 = then.pose;
+    if (rigid->radius != p0.radius)
+      return kUnbounded;
+    const Eigen::Quaterniond turn = rigid->q * p0.q.conjugate();
+    magnitude = std::max(rigid->x.cwiseAbs().maxCoeff(), p0.x.cwiseAbs().maxCoeff()) +
+                rigid->radius;
+    return (rigid->x - p0.x).norm() + 2.0 * turn.vec().norm() * rigid->radius;
+  }
+  const std::size_t n = t.x.size();
+  if (then.vertices.size() != 3 * n)
+    return kUnbounded;
+  double d2 = 0.0, m = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double dx = t.x[i] - then.vertices[3 * i], dy = t.y[i] - then.vertices[3 * i + 1],
+                 dz = t.z[i] - then.vertices[3 * i + 2];
+    d2 = std::max(d2, dx * dx + dy * dy + dz * dz);
+    m = std::max(m, std::max(std::fabs(t.x[i]), std::max(std::fabs(t.y[i]), std::fabs(t.z[i]))));
+  }
+  magnitude = m + std::sqrt(d2);
+  return std::sqrt(d2);
+}
+
+double CandidateCache::moved(const Pose &a, const RigidPose *pose_a, const TriangleSoA &ta,
+                             const Pose &b, const RigidPose *pose_b, const TriangleSoA &tb,
+                             double length) {
+  double magnitude_a = 0.0, magnitude_b = 0.0;
+  const double d = displacement(a, pose_a, ta, magnitude_a) + displacement(b, pose_b, tb, magnitude_b);
+  return d + kSeparationSlackRatio * (magnitude_a + magnitude_b + std::fabs(length));
+}
+
+bool CandidateCache::covers(const RigidPose *pose_a, const TriangleSoA &a, const RigidPose *pose_b,
+                            const TriangleSoA &b, double cutoff) const {
+  if (!valid_ || cutoff != cutoff_)
+    return false;
+  // false for NaN or an unbounded motion
+  return moved(a_, pose_a, a, b_, pose_b, b, cutoff + reach_) < reach_;
+}
+
+bool CandidateCache::proves_apart(const RigidPose *pose_a, const TriangleSoA &a,
+                                  const RigidPose *pose_b, const TriangleSoA &b,
+                                  double cutoff) const {
+  if (!gap_valid_ || !(gap_ >= cutoff))
+    return false;
+  return gap_ - moved(gap_a_, pose_a, a, gap_b_, pose_b, b, gap_) >= cutoff;
+}
+
+void CandidateCache::keep_gap(const RigidPose *pose_a, const TriangleSoA &a,
+                              const RigidPose *pose_b, const TriangleSoA &b, double gap) {
+  gap_valid_ = std::isfinite(gap);
+  if (!gap_valid_)
+    return;
+  record(pose_a, a, gap_a_);
+  record(pose_b, b, gap_b_);
+  gap_ = gap;
+}
+
+void CandidateCache::keep(const RigidPose *pose_a, const TriangleSoA &a, const RigidPose *pose_b,
+                          const TriangleSoA &b, double cutoff, double reach,
+                          const TrianglePairIndex *pairs, int count) {
+  record(pose_a, a, a_);
+  record(pose_b, b, b_);
+  cutoff_ = cutoff;
+  reach_ = reach;
+  pairs_.assign(pairs, pairs + count);
+  valid_ = true;
+}
+
+std::size_t CandidateCache::bytes() const {
+  return pairs_.capacity() * sizeof(TrianglePairIndex) +
+         (a_.vertices.capacity() + b_.vertices.capacity() + gap_a_.vertices.capacity() +
+          gap_b_.vertices.capacity()) *
+             sizeof(double);
+}
+
+} // namespace tri

@@ -1,0 +1,106 @@
+// Triangle-pair candidates kept between steps for one body pair: temporal coherence (issue 12,
+// item 1). Bodies in contact, in a pile above all, barely move from one step to the next, yet
+// the cull (boxes in two frames, then the separating-axis test of each surviving triangle
+// pair) would rebuild the same short list every step. Instead the list is built once with a
+// wider margin, cutoff + reach, and reused while the bodies cannot have moved far enough for a
+// pair outside it to come within the cutoff.
+//
+// Proof. Every point of a triangle is a convex combination of its vertices, so it moves no
+// farther than its farthest vertex; the distance of two triangles therefore changes by at
+// most D_a + D_b, D the largest displacement of a body's vertices since the list was built.
+// The list holds every pair closer than cutoff + reach then (the cull keeps every pair closer
+// than its margin, triangle_boxes.h), so while D_a + D_b + slack < reach every pair now closer
+// than the cutoff is in it. The distance kernel treats each pair on its own (particle_contacts.h:
+// contacts_among_candidates), so the contacts are exactly those of a full search, bit for bit,
+// in the same order; only which pairs are tested beyond the cutoff differs.
+//
+// D of a rigid particle (world vertex R p + x, |p| <= bounding radius r in its body frame):
+//   D <= |x - x0| + |R - R0| r = |x - x0| + 2 sin(theta / 2) r,
+// theta the angle of the rotation R R0^T; for unit quaternions sin(theta / 2) is the length of
+// the vector part of q q0^* (either sign of q). D of a wall patch (no body frame; the host
+// gathers its triangles afresh each step): the largest displacement of its vertices, listed in
+// the same order, which also catches a patch whose triangles changed (then the count differs,
+// or a vertex jumps). Rounding: the world vertices and the bound carry errors of a few ulps of
+// the coordinates; the slack, kSeparationSlackRatio (separating_axis.h) times the magnitudes,
+// is orders of magnitude above them.
+//
+// The same bound keeps a proof of separation: a gap g proven between the bodies (along a
+// separating axis, separating_axis.h) shrinks by at most D_a + D_b, so while
+// g - D_a - D_b - slack >= cutoff the bodies are still apart, in O(1) for particles, without
+// projecting their vertices again.
+//
+// The kept list is the host's (one per body pair, pair tri/gran and fix tri/wall); a list may
+// be dropped at any time (neighbour-list rebuild, migration, restart): the next step searches
+// afresh, and the contacts are the same either way.
+#pragma once
+
+#include "distance_kernels.h"
+#include "triangle_soa.h"
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <cstddef>
+#include <vector>
+
+namespace tri {
+
+// The rigid pose of a particle whose world triangles are R(q) p + x with |p| <= radius.
+struct RigidPose {
+  Eigen::Vector3d x = Eigen::Vector3d::Zero();           // m, centre of mass
+  Eigen::Quaterniond q = Eigen::Quaterniond::Identity(); // body frame -> world, unit
+  double radius = 0.0;                                   // m, farthest vertex from x
+};
+
+class CandidateCache {
+public:
+  // True when the kept list still holds every pair of the bodies now closer than `cutoff`:
+  // a list exists, was built for this cutoff, and the motion since then is within its reach.
+  // `pose_a`, `pose_b`: null for a wall patch (its vertices `b` are compared instead).
+  bool covers(const RigidPose *pose_a, const TriangleSoA &a, const RigidPose *pose_b,
+              const TriangleSoA &b, double cutoff) const;
+
+  // Keeps pairs[0, count), found with margin cutoff + reach, and the bodies' poses now.
+  void keep(const RigidPose *pose_a, const TriangleSoA &a, const RigidPose *pose_b,
+            const TriangleSoA &b, double cutoff, double reach, const TrianglePairIndex *pairs,
+            int count);
+
+  // True when a kept gap still proves every pair at least `cutoff` apart.
+  bool proves_apart(const RigidPose *pose_a, const TriangleSoA &a, const RigidPose *pose_b,
+                    const TriangleSoA &b, double cutoff) const;
+  // Keeps `gap` (m), proven between the bodies now, and their poses.
+  void keep_gap(const RigidPose *pose_a, const TriangleSoA &a, const RigidPose *pose_b,
+                const TriangleSoA &b, double gap);
+
+  void clear() { valid_ = false; }
+  const TrianglePairIndex *pairs() const { return pairs_.data(); }
+  int count() const { return static_cast<int>(pairs_.size()); }
+  std::size_t bytes() const; // heap memory held
+
+private:
+  // Where a body was: a particle by its rigid pose, a wall patch by its vertices.
+  struct Pose {
+    bool rigid = false;
+    RigidPose pose;
+    std::vector<double> vertices; // wall: x, y, z of each SoA vertex
+  };
+  static void record(const RigidPose *rigid, const TriangleSoA &t, Pose &out);
+  // The bound D of the header on the body's vertex displacements, plus its magnitude M (the
+  // largest coordinate, for the rounding slack); D = infinity if it cannot be bounded.
+  static double displacement(const Pose &then, const RigidPose *rigid, const TriangleSoA &t,
+                             double &magnitude);
+
+  // The motion of both bodies since the poses a, b were recorded, plus the rounding slack.
+  static double moved(const Pose &a, const RigidPose *pose_a, const TriangleSoA &ta,
+                      const Pose &b, const RigidPose *pose_b, const TriangleSoA &tb,
+                      double length);
+
+  bool valid_ = false; // candidates kept
+  double cutoff_ = 0.0, reach_ = 0.0;
+  Pose a_, b_;
+  bool gap_valid_ = false; // a gap kept
+  double gap_ = 0.0;
+  Pose gap_a_, gap_b_;
+  std::vector<TrianglePairIndex> pairs_;
+};
+
+} // namespace tri

@@ -1,0 +1,250 @@
+// Kept triangle-pair candidates and kept gaps (candidate_cache.h): the motion bound at the edge
+// of its reach, and over moving, rotating particle pairs and a rock bouncing on a wall patch,
+// step after step, bitwise the result of the search without anything kept, with brute force's
+// contacts, while the kept candidates and gaps do replace most searches.
+#include "body_pair_helpers.h"
+#include "candidate_cache.h"
+#include "test_particles.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+using namespace tri;
+using namespace tri_test;
+using Eigen::Vector3d;
+
+namespace {
+
+// Moves `t` (a body of radius r about x) by a translation d and a rotation by `angle`, then
+// asks whether candidates kept at the old pose with `reach` still cover it.
+bool covers_after(double dx, double angle, double r, double reach) {
+  const Shape s = rock(20, 7);
+  RigidPose before, after;
+  before.x = Vector3d(0.3, -0.2, 0.1);
+  before.q = Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Vector3d(1, 2, 3).normalized()));
+  before.radius = after.radius = r;
+  after.x = before.x + dx * Vector3d(2, -1, 2).normalized();
+  after.q = Eigen::Quaterniond(Eigen::AngleAxisd(angle, Vector3d(-1, 1, 0.5).normalized())) *
+            before.q;
+  TriangleSoA wa, wb;
+  transform_soa(s.soa, before.q.toRotationMatrix(), before.x, wa);
+  RigidPose other;
+  other.x = Vector3d(0.3, -0.2, 0.1 + 0.0041);
+  other.radius = r;
+  transform_soa(s.soa, Eigen::Matrix3d::Identity(), other.x, wb);
+  CandidateCache cache;
+  const TrianglePairIndex pairs[1] = {{0, 0}};
+  cache.keep(&before, wa, &other, wb, 2e-4, reach, pairs, 1);
+  transform_soa(s.soa, after.q.toRotationMatrix(), after.x, wa);
+  return cache.covers(&after, wa, &other, wb, 2e-4);
+}
+
+} // namespace
+
+// D = |dx| + 2 sin(angle / 2) r: just inside the reach the list covers, just outside it does
+// not; a different cutoff or radius never reuses it.
+TEST(CandidateCache, MotionBoundAtTheEdgeOfTheReach) {
+  const double r = 0.002, reach = 1e-5;
+  EXPECT_TRUE(covers_after(0.0, 0.0, r, reach));
+  EXPECT_TRUE(covers_after(0.99 * reach, 0.0, r, reach));
+  EXPECT_FALSE(covers_after(1.01 * reach, 0.0, r, reach));
+  const double angle = 2.0 * std::asin(reach / (2.0 * r)); // chord = reach
+  EXPECT_TRUE(covers_after(0.0, 0.99 * angle, r, reach));
+  EXPECT_FALSE(covers_after(0.0, 1.01 * angle, r, reach));
+  EXPECT_TRUE(covers_after(0.49 * reach, 0.49 * angle, r, reach));
+  EXPECT_FALSE(covers_after(0.51 * reach, 0.51 * angle, r, reach));
+  EXPECT_FALSE(covers_after(std::numeric_limits<double>::quiet_NaN(), 0.0, r, reach));
+
+  const Shape s = rock(20, 7);
+  TriangleSoA w;
+  transform_soa(s.soa, Eigen::Matrix3d::Identity(), Vector3d::Zero(), w);
+  RigidPose p;
+  p.radius = s.bounding_radius;
+  CandidateCache cache;
+  EXPECT_FALSE(cache.covers(&p, w, &p, w, 2e-4)); // nothing kept yet
+  cache.keep(&p, w, &p, w, 2e-4, 1e-5, nullptr, 0);
+  EXPECT_TRUE(cache.covers(&p, w, &p, w, 2e-4));
+  EXPECT_FALSE(cache.covers(&p, w, &p, w, 3e-4)); // another cutoff
+  RigidPose bigger = p;
+  bigger.radius *= 2;
+  EXPECT_FALSE(cache.covers(&bigger, w, &p, w, 2e-4));
+  EXPECT_FALSE(cache.covers(&p, w, nullptr, w, 2e-4)); // a wall where a particle was
+}
+
+// A wall patch is compared vertex by vertex: a moved vertex beyond the reach, or a patch that
+// gained a triangle, is not covered; a kept gap proves the bodies apart only while the motion
+// cannot have closed it.
+TEST(CandidateCache, WallPatchByItsVerticesAndKeptGaps) {
+  const Shape s = rock(20, 9);
+  TriangleSoA particle, patch;
+  transform_soa(s.soa, Eigen::Matrix3d::Identity(), Vector3d::Zero(), particle);
+  patch.resize(1);
+  patch.set_vertex(0, 0, Vector3d(-0.01, -0.01, -0.003));
+  patch.set_vertex(0, 1, Vector3d(0.01, -0.01, -0.003));
+  patch.set_vertex(0, 2, Vector3d(0.0, 0.01, -0.003));
+  RigidPose p;
+  p.radius = s.bounding_radius;
+  CandidateCache cache;
+  cache.keep(&p, particle, nullptr, patch, 2e-4, 1e-5, nullptr, 0);
+  EXPECT_TRUE(cache.covers(&p, particle, nullptr, patch, 2e-4));
+  TriangleSoA moved = patch;
+  moved.set_vertex(0, 2, Vector3d(0.0, 0.01, -0.003 + 0.99e-5));
+  EXPECT_TRUE(cache.covers(&p, particle, nullptr, moved, 2e-4));
+  moved.set_vertex(0, 2, Vector3d(0.0, 0.01, -0.003 + 1.01e-5));
+  EXPECT_FALSE(cache.covers(&p, particle, nullptr, moved, 2e-4));
+  TriangleSoA grown = patch;
+  grown.resize(2);
+  for (int k = 0; k < 3; ++k)
+    grown.set_vertex(1, k, patch.vertex(0, k));
+  EXPECT_FALSE(cache.covers(&p, particle, nullptr, grown, 2e-4));
+
+  // A gap of 5e-4 kept: apart for a cutoff of 2e-4 until the bodies have moved 3e-4.
+  EXPECT_FALSE(cache.proves_apart(&p, particle, nullptr, patch, 2e-4)); // none kept yet
+  cache.keep_gap(&p, particle, nullptr, patch, 5e-4);
+  EXPECT_TRUE(cache.proves_apart(&p, particle, nullptr, patch, 2e-4));
+  EXPECT_FALSE(cache.proves_apart(&p, particle, nullptr, patch, 6e-4));
+  RigidPose q = p;
+  q.x = Vector3d(0, 0, -2.9e-4);
+  EXPECT_TRUE(cache.proves_apart(&q, particle, nullptr, patch, 2e-4));
+  q.x = Vector3d(0, 0, -3.1e-4);
+  EXPECT_FALSE(cache.proves_apart(&q, particle, nullptr, patch, 2e-4));
+}
+
+// Two rocks spinning and sliding past each other through contact (and intersecting) and apart,
+// over many steps: with candidates and gaps kept (and the axis, as the styles keep it), every
+// step bitwise the result of the plain search, its contacts brute force's; most steps reuse
+// what was kept.
+TEST(CandidateCache, KeptCandidatesChangeNothingOnMovingRotatingPairs) {
+  const double eps = 1e-4, dt = 1e-5;
+  long long kept_steps = 0, separated = 0, touching = 0, searched = 0;
+  for (int pair = 0; pair < 4; ++pair) {
+    const Shape sa = rock(pair % 2 ? 40 : 20, 11 + pair), sb = rock(pair / 2 ? 40 : 20, 21 + pair);
+    std::mt19937_64 rng(700 + pair);
+    const Vector3d axis_a = Vector3d(uniform(rng, -1, 1), uniform(rng, -1, 1), 1).normalized();
+    const Vector3d axis_b = Vector3d(1, uniform(rng, -1, 1), uniform(rng, -1, 1)).normalized();
+    const Vector3d dir =
+        Vector3d(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)).normalized();
+    const Vector3d side = dir.unitOrthogonal();
+    double h_ref[kHistoryDoubles] = {}, h_got[kHistoryDoubles] = {}, axis[3] = {0, 0, 0};
+    InteractionScratch scratch_ref, scratch_got;
+    CandidateCache cache;
+    TriangleSoA wa, wb;
+    const int steps = 2000;
+    for (int step = 0; step < steps; ++step) {
+      const double t = double(step) / steps;
+      // centre distance 4.6 -> 2.6 -> 4.6 mm with a sideways sweep, slow spins: a few um a step
+      const double d = 0.0026 + 0.002 * std::abs(std::cos(M_PI * t));
+      RigidPose pa, pb;
+      pa.x = Vector3d(0.01, -0.02, 0.03);
+      pb.x = pa.x + d * dir + 0.0008 * std::sin(5 * t) * side;
+      pa.q = Eigen::Quaterniond(Eigen::AngleAxisd(1.5 * t, axis_a));
+      pb.q = Eigen::Quaterniond(Eigen::AngleAxisd(-2.0 * t, axis_b));
+      pa.radius = sa.bounding_radius;
+      pb.radius = sb.bounding_radius;
+      transform_soa(sa.soa, pa.q.toRotationMatrix(), pa.x, wa);
+      transform_soa(sb.soa, pb.q.toRotationMatrix(), pb.x, wb);
+      Body a, b;
+      a.triangles = &wa;
+      b.triangles = &wb;
+      a.pose = pa;
+      b.pose = pb;
+      for (Body *p : {&a, &b}) {
+        p->epsilon = eps;
+        p->state.mass = 1e-4;
+        p->state.x = p->pose.x;
+      }
+      a.longest_edge = sa.max_edge_length;
+      a.min_edge = sa.min_edge_length;
+      b.longest_edge = sb.max_edge_length;
+      b.min_edge = sb.min_edge_length;
+      a.state.omega = 1.5 * axis_a;
+      b.state.omega = -2.0 * axis_b;
+      ContactStats st_ref, st_got;
+      const PairForceResult ref =
+          body_interaction(a, b, settings(true), dt, h_ref, scratch_ref, st_ref);
+      const PairForceResult got =
+          body_interaction(a, b, settings(true, 0.25), dt, h_got, scratch_got, st_got,
+                           SeparationCache{axis, true, &cache});
+      const std::string what = "pair " + std::to_string(pair) + " step " + std::to_string(step);
+      expect_bitwise(ref, got, what);
+      for (int k = 0; k < kHistoryDoubles; ++k)
+        ASSERT_EQ(h_ref[k], h_got[k]) << what;
+      kept_steps += st_got.candidates_kept;
+      separated += st_got.bodies_separated;
+      touching += ref.contacts_after > 0;
+      if (st_got.bodies_separated == 0) {
+        ++searched;
+        const auto bf = brute_force_contacts(wa, eps, wb, eps);
+        ASSERT_EQ(bf.size(), scratch_got.triangle_contacts.size()) << what;
+        for (std::size_t k = 0; k < bf.size(); ++k) {
+          ASSERT_EQ(bf[k].tri_a, scratch_got.triangle_contacts[k].tri_a) << what;
+          ASSERT_EQ(bf[k].tri_b, scratch_got.triangle_contacts[k].tri_b) << what;
+        }
+      } else {
+        ASSERT_EQ(ref.contacts_after, 0) << what;
+      }
+    }
+  }
+  EXPECT_GT(touching, 1000);  // the trajectories do touch (1148) ...
+  EXPECT_GT(kept_steps, 900); // ... and the kept candidates do most searches (1063 of 1232)
+  EXPECT_GT(separated, 5000); // kept gaps and axes the rest (6768 of 8000 steps)
+}
+
+// A spinning rock sliding and bouncing on a patch of four wall triangles, one sloping: kept
+// candidates and gaps against a wall (its vertices as its pose) change nothing.
+TEST(CandidateCache, KeptCandidatesChangeNothingAgainstAWallPatch) {
+  const double eps = 1e-4, dt = 1e-5;
+  const Shape s = rock(40, 5);
+  TriangleSoA patch;
+  patch.resize(4);
+  const Vector3d p[6] = {{-0.01, -0.01, 0}, {0.01, -0.01, 0}, {0.01, 0.01, 0},
+                         {-0.01, 0.01, 0},  {0.02, -0.01, -0.005}, {0.02, 0.01, -0.005}};
+  const int tris[4][3] = {{0, 1, 2}, {0, 2, 3}, {1, 4, 5}, {1, 5, 2}};
+  for (int t = 0; t < 4; ++t)
+    for (int k = 0; k < 3; ++k)
+      patch.set_vertex(t, k, p[tris[t][k]] + Vector3d(0.5, 0.5, 0.5));
+  long long kept_steps = 0, touching = 0;
+  double h_ref[kHistoryDoubles] = {}, h_got[kHistoryDoubles] = {}, axis[3] = {0, 0, 0};
+  InteractionScratch scratch_ref, scratch_got;
+  CandidateCache cache;
+  TriangleSoA w;
+  for (int step = 0; step < 1500; ++step) {
+    const double t = step / 1500.0;
+    RigidPose pose;
+    pose.x = Vector3d(0.5 + 0.0085 * t, 0.5, 0.5 + 0.0009 + 0.0012 * std::abs(std::cos(M_PI * t)));
+    pose.q = Eigen::Quaterniond(Eigen::AngleAxisd(2.0 * t, Vector3d(1, 2, 3).normalized()));
+    pose.radius = s.bounding_radius;
+    transform_soa(s.soa, pose.q.toRotationMatrix(), pose.x, w);
+    Body a, b;
+    a.triangles = &w;
+    a.pose = pose;
+    a.epsilon = eps;
+    a.longest_edge = s.max_edge_length;
+    a.min_edge = s.min_edge_length;
+    a.state.x = pose.x;
+    a.state.mass = 1e-4;
+    a.state.v = Vector3d(0.6, 0, -0.3);
+    b.triangles = &patch;
+    b.epsilon = eps;
+    b.longest_edge = std::numeric_limits<double>::infinity();
+    b.min_edge = s.min_edge_length;
+    b.state.x = Vector3d(0.5, 0.5, 0.5);
+    b.state.mass = 0.0;
+    ContactStats st_ref, st_got;
+    const PairForceResult ref = body_interaction(a, b, settings(true), dt, h_ref, scratch_ref, st_ref);
+    const PairForceResult got = body_interaction(a, b, settings(true, 0.05), dt, h_got, scratch_got,
+                                                 st_got, SeparationCache{axis, true, &cache});
+    const std::string what = "step " + std::to_string(step);
+    expect_bitwise(ref, got, what);
+    for (int k = 0; k < kHistoryDoubles; ++k)
+      ASSERT_EQ(h_ref[k], h_got[k]) << what;
+    kept_steps += st_got.candidates_kept;
+    touching += ref.contacts_after > 0;
+  }
+  EXPECT_GT(touching, 400);   // 522 of 1500 steps
+  EXPECT_GT(kept_steps, 200); // 261
+}
