@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <new>
 #include <utility>
 
 namespace tri {
@@ -102,7 +103,10 @@ Affine plane_height(const Vector3d &nt, const Vector3d &t0, const Vector3d &o, c
 bool contact_polygon(const Vector3d &a0, const Vector3d &a1, const Vector3d &a2, const Vector3d &b0,
                      const Vector3d &b1, const Vector3d &b2, const Vector3d &normal, double layer,
                      ContactPolygon &patch) {
-  patch = ContactPolygon();
+  // The defaults of the fields, without copying the corner arrays (3 KB, meaningful only up to
+  // num_vertices): an assignment from ContactPolygon() copied them for every triangle pair.
+  patch.~ContactPolygon();
+  new (&patch) ContactPolygon;
   const Vector3d ca = (a1 - a0).cross(a2 - a0), cb = (b1 - b0).cross(b2 - b0);
   const double la = ca.norm(), lb = cb.norm();
   if (!(la > 0.0) || !(lb > 0.0) || !std::isfinite(la + lb))

@@ -197,13 +197,14 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
     ++p.num_merged;
     if (absorbed[i])
       continue; // rim contacts count, but neither place nor orient the contact
-    ContactPolygon poly;
-    if (member_polygon(r, faces, layer, poly)) {
-      polygons.push_back(poly);
+    polygons.emplace_back(); // filled in place: a ContactPolygon is 3 KB
+    if (member_polygon(r, faces, layer, polygons.back())) {
       polygon_exact.push_back(!(r.intersecting || r.overlap > layer) ? layer : -1.0);
       D_poly = std::max(D_poly, exact_overlap(r, faces, layer));
-    } else
+    } else {
+      polygons.pop_back();
       deepest_plain = std::max(deepest_plain, r.overlap);
+    }
   }
   p.tri_a = s.tri_a;
   p.tri_b = s.tri_b;
