@@ -172,12 +172,12 @@ PairForceResult body_interaction(const Body &a, const Body &b, const Interaction
     }
     const int count =
         find_candidate_pairs(*a.triangles, *b.triangles, margin, s.distance, scratch.distance, skip);
-    if (coherent && cache.update)
-      cache.candidates->keep(pose_a, *a.triangles, pose_b, *b.triangles, cutoff, reach,
-                             scratch.distance.pairs.data(), count);
     contacts_among_candidates(*a.triangles, a.epsilon, *b.triangles, b.epsilon, s.distance,
                               scratch.distance.pairs.data(), count, scratch.triangle_contacts,
                               stats, scratch.distance);
+    if (coherent && cache.update)
+      cache.candidates->keep(pose_a, *a.triangles, pose_b, *b.triangles, cutoff, reach,
+                             scratch.distance.pairs.data(), count, scratch.distance.results.data());
   }
   if (cache.axis && cache.update) {
     const Eigen::Vector3d axis = scratch.triangle_contacts.empty()

@@ -89,12 +89,22 @@ void CandidateCache::keep_gap(const RigidPose *pose_a, const TriangleSoA &a,
 
 void CandidateCache::keep(const RigidPose *pose_a, const TriangleSoA &a, const RigidPose *pose_b,
                           const TriangleSoA &b, double cutoff, double reach,
-                          const TrianglePairIndex *pairs, int count) {
+                          const TrianglePairIndex *pairs, int count,
+                          const TrianglePairDistance *results) {
   record(pose_a, a, a_);
   record(pose_b, b, b_);
   cutoff_ = cutoff;
   reach_ = reach;
-  pairs_.assign(pairs, pairs + count);
+  if (!results) {
+    pairs_.assign(pairs, pairs + count);
+  } else {
+    // The slack of `moved` for no motion: the rounding of the coordinates.
+    const double beyond = cutoff + reach + moved(a_, pose_a, a, b_, pose_b, b, cutoff + reach);
+    pairs_.clear();
+    for (int k = 0; k < count; ++k)
+      if (!(results[k].lower_bound >= beyond))
+        pairs_.push_back(pairs[k]);
+  }
   valid_ = true;
 }
 

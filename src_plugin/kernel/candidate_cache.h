@@ -10,7 +10,8 @@
 // most D_a + D_b, D the largest displacement of a body's vertices since the list was built.
 // The list holds every pair closer than cutoff + reach then (the cull keeps every pair closer
 // than its margin, triangle_boxes.h), so while D_a + D_b + slack < reach every pair now closer
-// than the cutoff is in it. The distance kernel treats each pair on its own (particle_contacts.h:
+// than the cutoff is in it (pairs whose certified lower bound was already beyond cutoff + reach
+// are left out: they cannot be). The distance kernel treats each pair on its own (particle_contacts.h:
 // contacts_among_candidates), so the contacts are exactly those of a full search, bit for bit,
 // in the same order; only which pairs are tested beyond the cutoff differs.
 //
@@ -35,6 +36,7 @@
 #pragma once
 
 #include "distance_kernels.h"
+#include "triangle_distance.h"
 #include "triangle_soa.h"
 
 #include <Eigen/Core>
@@ -59,10 +61,13 @@ public:
   bool covers(const RigidPose *pose_a, const TriangleSoA &a, const RigidPose *pose_b,
               const TriangleSoA &b, double cutoff) const;
 
-  // Keeps pairs[0, count), found with margin cutoff + reach, and the bodies' poses now.
+  // Keeps pairs[0, count), found with margin cutoff + reach, and the bodies' poses now; with
+  // `results` (the distance kernel's on those pairs), only the pairs whose certified lower
+  // bound is below cutoff + reach (plus the rounding slack): the others cannot come within the
+  // cutoff while the list is used.
   void keep(const RigidPose *pose_a, const TriangleSoA &a, const RigidPose *pose_b,
             const TriangleSoA &b, double cutoff, double reach, const TrianglePairIndex *pairs,
-            int count);
+            int count, const TrianglePairDistance *results = nullptr);
 
   // True when a kept gap still proves every pair at least `cutoff` apart.
   bool proves_apart(const RigidPose *pose_a, const TriangleSoA &a, const RigidPose *pose_b,

@@ -68,6 +68,7 @@ TrianglePairDistance accepted_result(const PenaltyBlockResult &r, int l) {
   d.normal = (d.point_b - d.point_a) / d.distance;
   d.intersecting = false;
   d.penetration_depth = 0.0;
+  d.lower_bound = r.lower[l];
   return d;
 }
 

@@ -34,6 +34,7 @@ TrianglePairDistance separated(const geom::CheckResult &best, const Eigen::Vecto
   r.normal = length > 0.0 ? Eigen::Vector3d(diff / length) : min_overlap_axis(a, b).normal;
   r.intersecting = false;
   r.penetration_depth = 0.0;
+  r.lower_bound = r.distance;
   return r;
 }
 

@@ -39,6 +39,10 @@ struct TrianglePairDistance {
   Eigen::Vector3d normal;           // unit, from a towards b
   bool intersecting = false;        // the closed triangles share a point
   double penetration_depth = 0.0;   // intersecting only: separating translation along normal
+  // A certified lower bound of the distance (rigorous up to rounding of the coordinates): the
+  // distance itself from brute force, the penalty's separation bound (penalty_distance.h) from
+  // the hybrid kernel; 0 where nothing is certified (penalty alone).
+  double lower_bound = 0.0;
 };
 
 // Scalar reference: one pair, with branches.
