@@ -51,6 +51,9 @@ struct RigidPose {
   Eigen::Vector3d x = Eigen::Vector3d::Zero();           // m, centre of mass
   Eigen::Quaterniond q = Eigen::Quaterniond::Identity(); // body frame -> world, unit
   double radius = 0.0;                                   // m, farthest vertex from x
+  // Which body-frame triangles they are (the shape's SoA): a pose compares only with a pose of
+  // the same shape (a tag the host reuses for another particle starts afresh).
+  const void *frame = nullptr;
 };
 
 class CandidateCache {

@@ -291,6 +291,7 @@ tri::Body FixTriParticles::body(int i) const {
   b.pose.x = b.state.x;
   b.pose.q = orientation(i);
   b.pose.radius = s.bounding_radius;
+  b.pose.frame = &s.soa;
   return b;
 }
 

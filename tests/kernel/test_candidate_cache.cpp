@@ -46,7 +46,7 @@ bool covers_after(double dx, double angle, double r, double reach) {
 } // namespace
 
 // D = |dx| + 2 sin(angle / 2) r: just inside the reach the list covers, just outside it does
-// not; a different cutoff or radius never reuses it.
+// not; a different cutoff, radius or shape never reuses it.
 TEST(CandidateCache, MotionBoundAtTheEdgeOfTheReach) {
   const double r = 0.002, reach = 1e-5;
   EXPECT_TRUE(covers_after(0.0, 0.0, r, reach));
@@ -72,6 +72,9 @@ TEST(CandidateCache, MotionBoundAtTheEdgeOfTheReach) {
   RigidPose bigger = p;
   bigger.radius *= 2;
   EXPECT_FALSE(cache.covers(&bigger, w, &p, w, 2e-4));
+  RigidPose other_shape = p;
+  other_shape.frame = &s.soa; // another particle under the same tag
+  EXPECT_FALSE(cache.covers(&other_shape, w, &p, w, 2e-4));
   EXPECT_FALSE(cache.covers(&p, w, nullptr, w, 2e-4)); // a wall where a particle was
 }
 
