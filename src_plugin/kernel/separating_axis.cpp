@@ -11,6 +11,19 @@ Extent soa_extent(const TriangleSoA &t, const Eigen::Vector3d &n) {
   const double *x = t.x.data(), *y = t.y.data(), *z = t.z.data();
   const double nx = n.x(), ny = n.y(), nz = n.z();
   double lo = std::numeric_limits<double>::infinity(), hi = -lo, m = 0.0;
+  if (!t.distinct.empty()) { // each vertex once: the same extent, a third to a sixth the reads
+    const int *index = t.distinct.data();
+    const std::size_t distinct = t.distinct.size();
+#pragma omp simd reduction(min : lo) reduction(max : hi, m)
+    for (std::size_t k = 0; k < distinct; ++k) {
+      const int i = index[k];
+      const double s = nx * x[i] + ny * y[i] + nz * z[i];
+      lo = std::min(lo, s);
+      hi = std::max(hi, s);
+      m = std::max(m, std::max(std::fabs(x[i]), std::max(std::fabs(y[i]), std::fabs(z[i]))));
+    }
+    return {lo, hi, m};
+  }
 #pragma omp simd reduction(min : lo) reduction(max : hi, m)
   for (std::size_t i = 0; i < count; ++i) {
     const double s = nx * x[i] + ny * y[i] + nz * z[i];

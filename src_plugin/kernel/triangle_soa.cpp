@@ -8,6 +8,15 @@ TriangleSoA to_soa(const TriangleMesh &mesh) {
   for (int t = 0; t < mesh.num_triangles(); ++t)
     for (int k = 0; k < 3; ++k)
       soa.set_vertex(t, k, mesh.corner(t, k));
+  std::vector<char> seen(mesh.vertices.size(), 0);
+  for (int t = 0; t < mesh.num_triangles(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const int v = mesh.triangles[t][k];
+      if (!seen[v]) {
+        seen[v] = 1;
+        soa.distinct.push_back(3 * t + k);
+      }
+    }
   return soa;
 }
 
@@ -17,6 +26,7 @@ void transform_soa(const TriangleSoA &body, const Eigen::Matrix3d &rotation,
   world.x.resize(n);
   world.y.resize(n);
   world.z.resize(n);
+  world.distinct = body.distinct;
   const double *bx = body.x.data(), *by = body.y.data(), *bz = body.z.data();
   double *wx = world.x.data(), *wy = world.y.data(), *wz = world.z.data();
   const Eigen::Matrix3d &r = rotation;

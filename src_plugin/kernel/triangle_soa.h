@@ -9,14 +9,21 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <vector>
 
 namespace tri {
 
 struct TriangleSoA {
   AlignedVector<double> x, y, z; // size 3 * num_triangles()
+  // One index into x, y, z per distinct vertex of the mesh (its first copy), so that a pass
+  // over the vertices (separating_axis.h: soa_extent) reads each once, not once per triangle
+  // around it; empty where not known (every index counts). Kept by transform_soa (a vertex's
+  // copies transform to the same bits); resize() clears it.
+  std::vector<int> distinct;
 
   int num_triangles() const { return static_cast<int>(x.size() / 3); }
   void resize(int ntri) {
+    distinct.clear();
     x.resize(3 * static_cast<std::size_t>(ntri));
     y.resize(3 * static_cast<std::size_t>(ntri));
     z.resize(3 * static_cast<std::size_t>(ntri));
