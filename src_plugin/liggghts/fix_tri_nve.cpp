@@ -33,6 +33,27 @@ void FixTriNVE::init() {
 void FixTriNVE::reset_dt() {
   dtv_ = update->dt;
   dtf_ = 0.5 * update->dt * force->ftm2v;
+  // dtfm depends on dtf; the shapes are known by now (init comes first)
+  mass_cache_.assign(particles_ ? particles_->num_shapes() : 0, MassProperties{});
+}
+
+// Inline: twice per atom and step, a hit but for the first atom of each shape.
+inline __attribute__((always_inline)) const FixTriNVE::MassProperties &
+FixTriNVE::mass_properties(int i, double rmass) {
+  MassProperties &m = mass_cache_[particles_->shape_index(i)];
+  if (!(m.rmass == rmass))
+    compute_mass_properties(i, m);
+  return m;
+}
+
+void FixTriNVE::compute_mass_properties(int i, MassProperties &m) {
+  m.rmass = atom->rmass[i];
+  m.dtfm = dtf_ / m.rmass;
+  const Eigen::Vector3d inertia = particles_->principal_inertia(i);
+  for (int k = 0; k < 3; ++k) {
+    m.inertia[k] = inertia[k];
+    m.inverse[k] = 1.0 / inertia[k];
+  }
 }
 
 // omega is authoritative only where it no longer matches the angular momentum exactly, i.e.
@@ -57,8 +78,9 @@ void FixTriNVE::setup(int) {
 
 void FixTriNVE::kick_rotation(int i, double dt) {
   const double *t = atom->torque[i];
-  particles_->set_angular_momentum(i, particles_->angular_momentum(i) +
-                                          dt * Eigen::Vector3d(t[0], t[1], t[2]));
+  double *l = particles_->angular_momentum_data(i);
+  for (int k = 0; k < 3; ++k)
+    l[k] += dt * t[k];
 }
 
 void FixTriNVE::sync_omega(int i) {
@@ -70,10 +92,12 @@ void FixTriNVE::sync_omega(int i) {
 }
 
 void FixTriNVE::initial_integrate(int) {
-  double **x = atom->x, **v = atom->v, **f = atom->f, **torque = atom->torque;
+  double **x = atom->x, **v = atom->v, **f = atom->f;
   const double *rmass = atom->rmass;
   const int *mask = atom->mask;
   const int nlocal = atom->nlocal;
+  // Right after read_restart: the forces of the step the file was written at.
+  particles_->take_restored_forces_and_torques(groupbit);
   // Translation and the first rotational kick per atom; the free rotation of all atoms at
   // once (tri::rotate_free_many, vectorised across atoms: one atom's rotor is a long serial
   // chain, most of a free-flight step when done one atom at a time). Each atom's bits are
@@ -83,30 +107,24 @@ void FixTriNVE::initial_integrate(int) {
   for (int i = 0; i < nlocal; ++i) {
     if (!(mask[i] & groupbit))
       continue;
-    // Right after read_restart: the forces of the step the file was written at.
-    particles_->take_restored_force_and_torque(i, f[i], torque[i]);
-    const double dtfm = dtf_ / rmass[i];
+    const MassProperties &m = mass_properties(i, rmass[i]);
     for (int k = 0; k < 3; ++k) {
-      v[i][k] += dtfm * f[i][k];
+      v[i][k] += m.dtfm * f[i][k];
       x[i][k] += dtv_ * v[i][k];
     }
-    const double *t = torque[i];
-    const Eigen::Vector3d L = particles_->angular_momentum(i) + dtf_ * Eigen::Vector3d(t[0], t[1], t[2]);
-    const Eigen::Quaterniond q = particles_->orientation(i);
-    const Eigen::Vector3d inertia = particles_->principal_inertia(i);
-    rotor_.set(n, i, q, L, inertia);
-    ++n;
+    kick_rotation(i, dtf_); // L is not changed by the free rotation: final here
+    rotor_.set(n++, i, particles_->orientation_data(i), particles_->angular_momentum_data(i), m);
   }
   tri::rotate_free_many(n, rotor_.qw.data(), rotor_.qx.data(), rotor_.qy.data(), rotor_.qz.data(),
                         rotor_.lx.data(), rotor_.ly.data(), rotor_.lz.data(), rotor_.i0.data(),
-                        rotor_.i1.data(), rotor_.i2.data(), dtv_, rotor_.wx.data(),
-                        rotor_.wy.data(), rotor_.wz.data(), rotor_.large.data());
+                        rotor_.i1.data(), rotor_.i2.data(), rotor_.v0.data(), rotor_.v1.data(),
+                        rotor_.v2.data(), dtv_, rotor_.wx.data(), rotor_.wy.data(),
+                        rotor_.wz.data(), rotor_.large.data());
   double **omega = atom->omega;
   for (int k = 0; k < n; ++k) {
     const int i = rotor_.atom[k];
-    particles_->set_orientation(i, Eigen::Quaterniond(rotor_.qw[k], rotor_.qx[k], rotor_.qy[k],
-                                                      rotor_.qz[k]));
-    particles_->set_angular_momentum(i, Eigen::Vector3d(rotor_.lx[k], rotor_.ly[k], rotor_.lz[k]));
+    double *q = particles_->orientation_data(i);
+    q[0] = rotor_.qw[k], q[1] = rotor_.qx[k], q[2] = rotor_.qy[k], q[3] = rotor_.qz[k];
     omega[i][0] = rotor_.wx[k];
     omega[i][1] = rotor_.wy[k];
     omega[i][2] = rotor_.wz[k];
@@ -115,7 +133,8 @@ void FixTriNVE::initial_integrate(int) {
 
 void FixTriNVE::RotorBatch::resize(int n) {
   const std::size_t m = static_cast<std::size_t>(n);
-  for (std::vector<double> *a : {&qw, &qx, &qy, &qz, &lx, &ly, &lz, &i0, &i1, &i2, &wx, &wy, &wz})
+  for (std::vector<double> *a :
+       {&qw, &qx, &qy, &qz, &lx, &ly, &lz, &i0, &i1, &i2, &v0, &v1, &v2, &wx, &wy, &wz})
     if (a->size() < m)
       a->resize(m);
   if (atom.size() < m) {
@@ -124,44 +143,22 @@ void FixTriNVE::RotorBatch::resize(int n) {
   }
 }
 
-void FixTriNVE::RotorBatch::set(int k, int i, const Eigen::Quaterniond &q,
-                                const Eigen::Vector3d &l, const Eigen::Vector3d &inertia) {
-  atom[k] = i;
-  qw[k] = q.w(), qx[k] = q.x(), qy[k] = q.y(), qz[k] = q.z();
-  lx[k] = l.x(), ly[k] = l.y(), lz[k] = l.z();
-  i0[k] = inertia.x(), i1[k] = inertia.y(), i2[k] = inertia.z();
-}
-
 void FixTriNVE::final_integrate() {
-  double **v = atom->v, **f = atom->f;
+  double **v = atom->v, **f = atom->f, **omega = atom->omega;
   const double *rmass = atom->rmass;
   const int *mask = atom->mask;
   const int nlocal = atom->nlocal;
-  // The second kick per atom; omega from q and L for all atoms at once (vectorised, each
-  // atom's bits those of sync_omega).
-  rotor_.resize(nlocal);
-  int n = 0;
+  // The second kick and omega from q and L, atom by atom: omega is a few dozen flops once the
+  // inverse moments are at hand, less than copying the atom into a batch and back (the bits
+  // of tri::angular_velocity_unit and of sync_omega).
   for (int i = 0; i < nlocal; ++i) {
     if (!(mask[i] & groupbit))
       continue;
-    const double dtfm = dtf_ / rmass[i];
+    const MassProperties &m = mass_properties(i, rmass[i]);
     for (int k = 0; k < 3; ++k)
-      v[i][k] += dtfm * f[i][k];
+      v[i][k] += m.dtfm * f[i][k];
     kick_rotation(i, dtf_);
-    rotor_.set(n, i, particles_->orientation(i), particles_->angular_momentum(i),
-               particles_->principal_inertia(i));
-    ++n;
-  }
-  tri::angular_velocity_unit_many(n, rotor_.qw.data(), rotor_.qx.data(), rotor_.qy.data(),
-                                  rotor_.qz.data(), rotor_.lx.data(), rotor_.ly.data(),
-                                  rotor_.lz.data(), rotor_.i0.data(), rotor_.i1.data(),
-                                  rotor_.i2.data(), rotor_.wx.data(), rotor_.wy.data(),
-                                  rotor_.wz.data());
-  double **omega = atom->omega;
-  for (int k = 0; k < n; ++k) {
-    const int i = rotor_.atom[k];
-    omega[i][0] = rotor_.wx[k];
-    omega[i][1] = rotor_.wy[k];
-    omega[i][2] = rotor_.wz[k];
+    tri::rigid_detail::omega_of_unit(particles_->orientation_data(i),
+                                     particles_->angular_momentum_data(i), m.inverse, omega[i]);
   }
 }

@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <limits>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -29,14 +30,34 @@ private:
   double dtv_ = 0.0, dtf_ = 0.0;
   void kick_rotation(int i, double dt);
   void sync_omega(int i); // omega := angular velocity implied by q and L
-  // The group's atoms of one initial_integrate in the structure-of-arrays form of
-  // tri::rotate_free_many (kept between steps: no allocation once grown).
+  // What a half step needs of an atom's mass: dtf / rmass, the principal moments
+  // (FixTriParticles::principal_inertia) and their inverses. They are a function of the shape,
+  // rmass and dtf alone, and the atoms of one shape nearly always share one rmass (density *
+  // volume), so they are kept per shape for the rmass last seen and reused wherever an atom's
+  // rmass equals it (`set mass` atoms get theirs computed by the same expressions): the bits of
+  // computing them per atom, without the five divisions per atom and half step that were most
+  // of the integrator's own time in free flight.
+  struct MassProperties {
+    double rmass = std::numeric_limits<double>::quiet_NaN(); // NaN: equal to no rmass
+    double dtfm = 0.0, inertia[3] = {0.0, 0.0, 0.0}, inverse[3] = {0.0, 0.0, 0.0};
+  };
+  std::vector<MassProperties> mass_cache_; // per shape
+  const MassProperties &mass_properties(int i, double rmass); // rmass: atom->rmass[i]
+  void compute_mass_properties(int i, MassProperties &m);
+  // The group's atoms of one half step in the structure-of-arrays form of
+  // tri::rotate_free_many and tri::angular_velocity_unit_many (kept between steps: no
+  // allocation once grown).
   struct RotorBatch {
-    std::vector<double> qw, qx, qy, qz, lx, ly, lz, i0, i1, i2, wx, wy, wz;
+    std::vector<double> qw, qx, qy, qz, lx, ly, lz, i0, i1, i2, v0, v1, v2, wx, wy, wz;
     std::vector<int> atom, large;
     void resize(int n);
-    void set(int k, int i, const Eigen::Quaterniond &q, const Eigen::Vector3d &l,
-             const Eigen::Vector3d &inertia);
+    void set(int k, int i, const double *q, const double *l, const MassProperties &m) {
+      atom[k] = i;
+      qw[k] = q[0], qx[k] = q[1], qy[k] = q[2], qz[k] = q[3];
+      lx[k] = l[0], ly[k] = l[1], lz[k] = l[2];
+      i0[k] = m.inertia[0], i1[k] = m.inertia[1], i2[k] = m.inertia[2];
+      v0[k] = m.inverse[0], v1[k] = m.inverse[1], v2[k] = m.inverse[2];
+    }
   };
   RotorBatch rotor_;
 };
