@@ -103,6 +103,10 @@ void FixTriNVE::initial_integrate(int) {
   // chain, most of a free-flight step when done one atom at a time). Each atom's bits are
   // rotate_free's whatever its place in the batch, so thread and rank counts change nothing.
   rotor_.resize(nlocal);
+  using Batch = RotorBatch;
+  double *const b = rotor_.data.data(); // column c, atom k: b[c * stride + k]
+  const std::size_t stride = rotor_.stride;
+  int *const batch_atom = rotor_.atom.data();
   int n = 0;
   for (int i = 0; i < nlocal; ++i) {
     if (!(mask[i] & groupbit))
@@ -113,31 +117,43 @@ void FixTriNVE::initial_integrate(int) {
       x[i][k] += dtv_ * v[i][k];
     }
     kick_rotation(i, dtf_); // L is not changed by the free rotation: final here
-    rotor_.set(n++, i, particles_->orientation_data(i), particles_->angular_momentum_data(i), m);
+    const double *q = particles_->orientation_data(i), *l = particles_->angular_momentum_data(i);
+    batch_atom[n] = i;
+    for (int c = 0; c < 4; ++c)
+      b[(Batch::qw + c) * stride + n] = q[c];
+    for (int c = 0; c < 3; ++c) {
+      b[(Batch::lx + c) * stride + n] = l[c];
+      b[(Batch::i0 + c) * stride + n] = m.inertia[c];
+      b[(Batch::v0 + c) * stride + n] = m.inverse[c];
+    }
+    ++n;
   }
-  tri::rotate_free_many(n, rotor_.qw.data(), rotor_.qx.data(), rotor_.qy.data(), rotor_.qz.data(),
-                        rotor_.lx.data(), rotor_.ly.data(), rotor_.lz.data(), rotor_.i0.data(),
-                        rotor_.i1.data(), rotor_.i2.data(), rotor_.v0.data(), rotor_.v1.data(),
-                        rotor_.v2.data(), dtv_, rotor_.wx.data(), rotor_.wy.data(),
-                        rotor_.wz.data(), rotor_.large.data());
+  tri::rotate_free_many(n, rotor_.column(Batch::qw), rotor_.column(Batch::qx),
+                        rotor_.column(Batch::qy), rotor_.column(Batch::qz),
+                        rotor_.column(Batch::lx), rotor_.column(Batch::ly),
+                        rotor_.column(Batch::lz), rotor_.column(Batch::i0),
+                        rotor_.column(Batch::i1), rotor_.column(Batch::i2),
+                        rotor_.column(Batch::v0), rotor_.column(Batch::v1),
+                        rotor_.column(Batch::v2), dtv_, rotor_.column(Batch::wx),
+                        rotor_.column(Batch::wy), rotor_.column(Batch::wz), rotor_.large.data());
   double **omega = atom->omega;
   for (int k = 0; k < n; ++k) {
-    const int i = rotor_.atom[k];
+    const int i = batch_atom[k];
     double *q = particles_->orientation_data(i);
-    q[0] = rotor_.qw[k], q[1] = rotor_.qx[k], q[2] = rotor_.qy[k], q[3] = rotor_.qz[k];
-    omega[i][0] = rotor_.wx[k];
-    omega[i][1] = rotor_.wy[k];
-    omega[i][2] = rotor_.wz[k];
+    for (int c = 0; c < 4; ++c)
+      q[c] = b[(Batch::qw + c) * stride + k];
+    for (int c = 0; c < 3; ++c)
+      omega[i][c] = b[(Batch::wx + c) * stride + k];
   }
 }
 
 void FixTriNVE::RotorBatch::resize(int n) {
   const std::size_t m = static_cast<std::size_t>(n);
-  for (std::vector<double> *a :
-       {&qw, &qx, &qy, &qz, &lx, &ly, &lz, &i0, &i1, &i2, &v0, &v1, &v2, &wx, &wy, &wz})
-    if (a->size() < m)
-      a->resize(m);
-  if (atom.size() < m) {
+  if (stride < m) {
+    // Whole cache lines, plus one: columns a power of two apart (512 atoms: 4 KiB) would all
+    // fall into the same L1 set, and the batch's 16 columns would evict each other.
+    stride = (m + 7) / 8 * 8 + 8;
+    data.resize(columns * stride);
     atom.resize(m);
     large.resize(m);
   }

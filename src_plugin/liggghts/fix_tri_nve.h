@@ -44,20 +44,16 @@ private:
   std::vector<MassProperties> mass_cache_; // per shape
   const MassProperties &mass_properties(int i, double rmass); // rmass: atom->rmass[i]
   void compute_mass_properties(int i, MassProperties &m);
-  // The group's atoms of one half step in the structure-of-arrays form of
-  // tri::rotate_free_many and tri::angular_velocity_unit_many (kept between steps: no
+  // The group's atoms of one initial_integrate in the structure-of-arrays form of
+  // tri::rotate_free_many: one column of `stride` doubles per quantity (kept between steps: no
   // allocation once grown).
   struct RotorBatch {
-    std::vector<double> qw, qx, qy, qz, lx, ly, lz, i0, i1, i2, v0, v1, v2, wx, wy, wz;
+    enum Column { qw, qx, qy, qz, lx, ly, lz, i0, i1, i2, v0, v1, v2, wx, wy, wz, columns };
+    std::vector<double> data;
+    std::size_t stride = 0;
     std::vector<int> atom, large;
     void resize(int n);
-    void set(int k, int i, const double *q, const double *l, const MassProperties &m) {
-      atom[k] = i;
-      qw[k] = q[0], qx[k] = q[1], qy[k] = q[2], qz[k] = q[3];
-      lx[k] = l[0], ly[k] = l[1], lz[k] = l[2];
-      i0[k] = m.inertia[0], i1[k] = m.inertia[1], i2[k] = m.inertia[2];
-      v0[k] = m.inverse[0], v1[k] = m.inverse[1], v2[k] = m.inverse[2];
-    }
+    double *column(Column c) { return data.data() + c * stride; }
   };
   RotorBatch rotor_;
 };
