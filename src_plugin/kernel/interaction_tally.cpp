@@ -39,18 +39,6 @@ InteractionTally &InteractionTally::operator+=(const InteractionTally &o) {
   return *this;
 }
 
-double StatColumn::value(const InteractionTally &t) const {
-  InteractionTally &field_owner = const_cast<InteractionTally &>(t); // read only
-  return count ? static_cast<double>(*count(field_owner, bin)) : *length(field_owner);
-}
-
-void StatColumn::assign(InteractionTally &t, double v) const {
-  if (count)
-    *count(t, bin) = static_cast<long long>(v);
-  else
-    *length(t) = v;
-}
-
 namespace {
 
 using Tally = InteractionTally;
@@ -141,6 +129,13 @@ std::vector<StatColumn> make_columns() {
                            "deepest intersection past the soft layers as a fraction of the "
                            "resolvable depth (> 1 stops the run)",
                            [](Tally &t) { return &t.max_depth_of_limit; }));
+  Tally probe;
+  const char *base = reinterpret_cast<const char *>(&probe);
+  for (StatColumn &column : c) {
+    const char *field = column.count ? reinterpret_cast<const char *>(column.count(probe, column.bin))
+                                     : reinterpret_cast<const char *>(column.length(probe));
+    column.offset = static_cast<std::size_t>(field - base);
+  }
   return c;
 }
 
