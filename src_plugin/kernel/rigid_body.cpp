@@ -183,20 +183,6 @@ void rotate_free_many(int n, double *qw, double *qx, double *qy, double *qz, con
                        large);
 }
 
-void angular_velocity_unit_many(int n, const double *qw, const double *qx, const double *qy,
-                                const double *qz, const double *lx, const double *ly,
-                                const double *lz, const double *v0, const double *v1,
-                                const double *v2, double *wx, double *wy, double *wz) {
-#pragma omp simd
-  for (int k = 0; k < n; ++k) {
-    const double q[4] = {qw[k], qx[k], qy[k], qz[k]}, l[3] = {lx[k], ly[k], lz[k]};
-    const double inverse[3] = {v0[k], v1[k], v2[k]};
-    double w[3];
-    rigid_detail::omega_of_unit(q, l, inverse, w);
-    wx[k] = w[0], wy[k] = w[1], wz[k] = w[2];
-  }
-}
-
 Eigen::Vector3d body_angmom(const Eigen::Quaterniond &q, const Eigen::Vector3d &angmom_space) {
   return q.normalized().conjugate() * angmom_space;
 }

@@ -74,7 +74,8 @@ inline __attribute__((always_inline)) void omega_of_unit(const double q[4], cons
 
 // The same for a unit q (rotate_free leaves it so) and the inverse principal moments
 // 1/I_k: R diag(1/I) R^T L with no normalisation, the per-step form of fix tri/nve (the
-// omega rotate_free_many returns, bit for bit). Equal to angular_velocity to rounding.
+// omega rotate_free_many returns, bit for bit; its second half step calls
+// rigid_detail::omega_of_unit per atom). Equal to angular_velocity to rounding.
 inline Eigen::Vector3d angular_velocity_unit(const Eigen::Quaterniond &q,
                                              const Eigen::Vector3d &angmom_space,
                                              const Eigen::Vector3d &inverse_inertia) {
@@ -97,14 +98,6 @@ void rotate_free_many(int n, double *qw, double *qx, double *qy, double *qz, con
                       const double *ly, const double *lz, const double *i0, const double *i1,
                       const double *i2, const double *v0, const double *v1, const double *v2,
                       double dt, double *wx, double *wy, double *wz, int *scratch);
-
-// angular_velocity_unit for n particles at once, vectorised across them (fix tri/nve's second
-// half step), from the inverse principal moments v = 1/I:
-// (wx, wy, wz)[k] = angular_velocity_unit(q[k], L[k], v[k]) bit for bit, q unit.
-void angular_velocity_unit_many(int n, const double *qw, const double *qx, const double *qy,
-                                const double *qz, const double *lx, const double *ly,
-                                const double *lz, const double *v0, const double *v1,
-                                const double *v2, double *wx, double *wy, double *wz);
 
 // Inverse of angular_velocity: L_space = R diag(I) R^T omega_space (e.g. to start a particle
 // from a LIGGGHTS `omega`).
