@@ -154,8 +154,8 @@ void FixTriNVE::RotorBatch::resize(int n) {
     // fall into the same L1 set, and the batch's 16 columns would evict each other.
     stride = (m + 7) / 8 * 8 + 8;
     data.resize(columns * stride);
-    atom.resize(m);
-    large.resize(m);
+    atom.resize(stride); // every array holds `stride` atoms: n <= stride is all a step checks
+    large.resize(stride);
   }
 }
 
