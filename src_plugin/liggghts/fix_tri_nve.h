@@ -35,8 +35,9 @@ private:
   // rmass and dtf alone, and the atoms of one shape nearly always share one rmass (density *
   // volume), so they are kept per shape for the rmass last seen and reused wherever an atom's
   // rmass equals it (`set mass` atoms get theirs computed by the same expressions): the bits of
-  // computing them per atom, without the five divisions per atom and half step that were most
-  // of the integrator's own time in free flight.
+  // computing them per atom, without ten divisions per atom and step (dtf / rmass,
+  // rmass / volume and 1 / I, in both halves). Every atom integrated has its shape: fix
+  // tri/particles gives it in init() or in the pre_force of the step the atom arrives.
   struct MassProperties {
     double rmass = std::numeric_limits<double>::quiet_NaN(); // NaN: equal to no rmass
     double dtfm = 0.0, inertia[3] = {0.0, 0.0, 0.0}, inverse[3] = {0.0, 0.0, 0.0};
