@@ -39,18 +39,6 @@ InteractionTally &InteractionTally::operator+=(const InteractionTally &o) {
   return *this;
 }
 
-double StatColumn::value(const InteractionTally &t) const {
-  InteractionTally &field_owner = const_cast<InteractionTally &>(t); // read only
-  return count ? static_cast<double>(*count(field_owner, bin)) : *length(field_owner);
-}
-
-void StatColumn::assign(InteractionTally &t, double v) const {
-  if (count)
-    *count(t, bin) = static_cast<long long>(v);
-  else
-    *length(t) = v;
-}
-
 namespace {
 
 using Tally = InteractionTally;
@@ -146,6 +134,13 @@ std::vector<StatColumn> make_columns() {
                            "body pairs of pairs_checked whose triangle pairs came from their kept "
                            "candidates, without a cull (the bodies moved less than its reach)",
                            [](Tally &t, int) { return &t.distance.candidates_kept; }));
+  Tally probe;
+  const char *base = reinterpret_cast<const char *>(&probe);
+  for (StatColumn &column : c) {
+    const char *field = column.count ? reinterpret_cast<const char *>(column.count(probe, column.bin))
+                                     : reinterpret_cast<const char *>(column.length(probe));
+    column.offset = static_cast<std::size_t>(field - base);
+  }
   return c;
 }
 

@@ -9,6 +9,7 @@
 #include "contact_force.h"
 #include "particle_contacts.h"
 
+#include <cstddef>
 #include <limits>
 #include <string>
 #include <vector>
@@ -47,9 +48,23 @@ struct StatColumn {
   long long *(*count)(InteractionTally &t, int bin) = nullptr;
   double *(*length)(InteractionTally &t) = nullptr;
   int bin = 0;
+  // Where that field lies in an InteractionTally, in bytes: taken from count or length once,
+  // when the table is made, so that reading and writing a column is an inline load or store
+  // (tallies are combined column by column several times a step, even in free flight).
+  std::size_t offset = 0;
 
-  double value(const InteractionTally &t) const; // counts as doubles (exact below 2^53)
-  void assign(InteractionTally &t, double v) const;
+  double value(const InteractionTally &t) const { // counts as doubles (exact below 2^53)
+    const char *field = reinterpret_cast<const char *>(&t) + offset;
+    return count ? static_cast<double>(*reinterpret_cast<const long long *>(field))
+                 : *reinterpret_cast<const double *>(field);
+  }
+  void assign(InteractionTally &t, double v) const {
+    char *field = reinterpret_cast<char *>(&t) + offset;
+    if (count)
+      *reinterpret_cast<long long *>(field) = static_cast<long long>(v);
+    else
+      *reinterpret_cast<double *>(field) = v;
+  }
 };
 
 // Every column of compute tri/stats, in its vector order.

@@ -143,13 +143,15 @@ inline __attribute__((always_inline)) void rotor_lane(int k, double *qw, double 
                                                       double *qz, const double *lx,
                                                       const double *ly, const double *lz,
                                                       const double *i0, const double *i1,
-                                                      const double *i2, double dt, double *wx,
-                                                      double *wy, double *wz, int *large_out) {
+                                                      const double *i2, const double *v0,
+                                                      const double *v1, const double *v2,
+                                                      double dt, double *wx, double *wy,
+                                                      double *wz, int *large_out) {
   double q[4] = {qw[k], qx[k], qy[k], qz[k]};
   const double l[3] = {lx[k], ly[k], lz[k]}, inertia[3] = {i0[k], i1[k], i2[k]};
   int large = 0;
   rotor_step<Libm>(q, l, inertia, dt, large);
-  const double inverse[3] = {1.0 / inertia[0], 1.0 / inertia[1], 1.0 / inertia[2]};
+  const double inverse[3] = {v0[k], v1[k], v2[k]};
   double w[3];
   rigid_detail::omega_of_unit(q, l, inverse, w);
   if constexpr (!Libm)
@@ -166,31 +168,19 @@ inline __attribute__((always_inline)) void rotor_lane(int k, double *qw, double 
 
 void rotate_free_many(int n, double *qw, double *qx, double *qy, double *qz, const double *lx,
                       const double *ly, const double *lz, const double *i0, const double *i1,
-                      const double *i2, double dt, double *wx, double *wy, double *wz,
-                      int *large) {
+                      const double *i2, const double *v0, const double *v1, const double *v2,
+                      double dt, double *wx, double *wy, double *wz, int *large) {
   // All particles with the series, vectorised across particles; a particle that turns by
   // more than 0.05 rad in a sub-step keeps its input and is redone with std::sin and std::cos
   // (rotate_free's path: the same bits wherever the series is used).
 #pragma omp simd
   for (int k = 0; k < n; ++k)
-    rotor_lane<false>(k, qw, qx, qy, qz, lx, ly, lz, i0, i1, i2, dt, wx, wy, wz, large);
+    rotor_lane<false>(k, qw, qx, qy, qz, lx, ly, lz, i0, i1, i2, v0, v1, v2, dt, wx, wy, wz,
+                      large);
   for (int k = 0; k < n; ++k)
     if (large[k])
-      rotor_lane<true>(k, qw, qx, qy, qz, lx, ly, lz, i0, i1, i2, dt, wx, wy, wz, large);
-}
-
-void angular_velocity_unit_many(int n, const double *qw, const double *qx, const double *qy,
-                                const double *qz, const double *lx, const double *ly,
-                                const double *lz, const double *i0, const double *i1,
-                                const double *i2, double *wx, double *wy, double *wz) {
-#pragma omp simd
-  for (int k = 0; k < n; ++k) {
-    const double q[4] = {qw[k], qx[k], qy[k], qz[k]}, l[3] = {lx[k], ly[k], lz[k]};
-    const double inverse[3] = {1.0 / i0[k], 1.0 / i1[k], 1.0 / i2[k]};
-    double w[3];
-    rigid_detail::omega_of_unit(q, l, inverse, w);
-    wx[k] = w[0], wy[k] = w[1], wz[k] = w[2];
-  }
+      rotor_lane<true>(k, qw, qx, qy, qz, lx, ly, lz, i0, i1, i2, v0, v1, v2, dt, wx, wy, wz,
+                       large);
 }
 
 Eigen::Vector3d body_angmom(const Eigen::Quaterniond &q, const Eigen::Vector3d &angmom_space) {

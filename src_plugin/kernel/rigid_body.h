@@ -74,7 +74,8 @@ inline __attribute__((always_inline)) void omega_of_unit(const double q[4], cons
 
 // The same for a unit q (rotate_free leaves it so) and the inverse principal moments
 // 1/I_k: R diag(1/I) R^T L with no normalisation, the per-step form of fix tri/nve (the
-// omega rotate_free_many returns, bit for bit). Equal to angular_velocity to rounding.
+// omega rotate_free_many returns, bit for bit; its second half step calls
+// rigid_detail::omega_of_unit per atom). Equal to angular_velocity to rounding.
 inline Eigen::Vector3d angular_velocity_unit(const Eigen::Quaterniond &q,
                                              const Eigen::Vector3d &angmom_space,
                                              const Eigen::Vector3d &inverse_inertia) {
@@ -88,20 +89,15 @@ inline Eigen::Vector3d angular_velocity_unit(const Eigen::Quaterniond &q,
 
 // rotate_free for n particles at once, vectorised across them (fix tri/nve's loop), in
 // structure-of-arrays form: q = (qw, qx, qy, qz) advanced in place, bit for bit as rotate_free
-// would; L (space frame) unchanged by the step; principal moments i0, i1, i2; and the angular
-// velocity of the advanced state, (wx, wy, wz) = angular_velocity_unit(q', L, 1/I) bit for bit.
+// would; L (space frame) unchanged by the step; principal moments i0, i1, i2 and their
+// inverses v0, v1, v2 (1.0 / i_k, which the caller keeps: a division per moment and step is
+// a large part of this loop); and the angular velocity of the advanced state,
+// (wx, wy, wz) = angular_velocity_unit(q', L, (v0, v1, v2)) bit for bit.
 // `scratch` holds n ints. All arrays of length n, not aliased.
 void rotate_free_many(int n, double *qw, double *qx, double *qy, double *qz, const double *lx,
                       const double *ly, const double *lz, const double *i0, const double *i1,
-                      const double *i2, double dt, double *wx, double *wy, double *wz,
-                      int *scratch);
-
-// angular_velocity_unit for n particles at once, vectorised across them (fix tri/nve's second
-// half step): (wx, wy, wz)[k] = angular_velocity_unit(q[k], L[k], 1/I[k]) bit for bit, q unit.
-void angular_velocity_unit_many(int n, const double *qw, const double *qx, const double *qy,
-                                const double *qz, const double *lx, const double *ly,
-                                const double *lz, const double *i0, const double *i1,
-                                const double *i2, double *wx, double *wy, double *wz);
+                      const double *i2, const double *v0, const double *v1, const double *v2,
+                      double dt, double *wx, double *wy, double *wz, int *scratch);
 
 // Inverse of angular_velocity: L_space = R diag(I) R^T omega_space (e.g. to start a particle
 // from a LIGGGHTS `omega`).

@@ -33,6 +33,27 @@ void FixTriNVE::init() {
 void FixTriNVE::reset_dt() {
   dtv_ = update->dt;
   dtf_ = 0.5 * update->dt * force->ftm2v;
+  // dtfm depends on dtf; the shapes are known by now (init comes first)
+  mass_cache_.assign(particles_ ? particles_->num_shapes() : 0, MassProperties{});
+}
+
+// Inline: twice per atom and step, a hit but for the first atom of each shape.
+inline __attribute__((always_inline)) const FixTriNVE::MassProperties &
+FixTriNVE::mass_properties(int i, double rmass) {
+  MassProperties &m = mass_cache_[particles_->shape_index(i)];
+  if (!(m.rmass == rmass))
+    compute_mass_properties(i, m);
+  return m;
+}
+
+void FixTriNVE::compute_mass_properties(int i, MassProperties &m) {
+  m.rmass = atom->rmass[i];
+  m.dtfm = dtf_ / m.rmass;
+  const Eigen::Vector3d inertia = particles_->principal_inertia(i);
+  for (int k = 0; k < 3; ++k) {
+    m.inertia[k] = inertia[k];
+    m.inverse[k] = 1.0 / inertia[k];
+  }
 }
 
 // omega is authoritative only where it no longer matches the angular momentum exactly, i.e.
@@ -57,8 +78,9 @@ void FixTriNVE::setup(int) {
 
 void FixTriNVE::kick_rotation(int i, double dt) {
   const double *t = atom->torque[i];
-  particles_->set_angular_momentum(i, particles_->angular_momentum(i) +
-                                          dt * Eigen::Vector3d(t[0], t[1], t[2]));
+  double *l = particles_->angular_momentum_data(i);
+  for (int k = 0; k < 3; ++k)
+    l[k] += dt * t[k];
 }
 
 void FixTriNVE::sync_omega(int i) {
@@ -70,98 +92,89 @@ void FixTriNVE::sync_omega(int i) {
 }
 
 void FixTriNVE::initial_integrate(int) {
-  double **x = atom->x, **v = atom->v, **f = atom->f, **torque = atom->torque;
+  double **x = atom->x, **v = atom->v, **f = atom->f;
   const double *rmass = atom->rmass;
   const int *mask = atom->mask;
   const int nlocal = atom->nlocal;
+  // Right after read_restart: the forces of the step the file was written at.
+  particles_->take_restored_forces_and_torques(groupbit);
   // Translation and the first rotational kick per atom; the free rotation of all atoms at
   // once (tri::rotate_free_many, vectorised across atoms: one atom's rotor is a long serial
   // chain, most of a free-flight step when done one atom at a time). Each atom's bits are
   // rotate_free's whatever its place in the batch, so thread and rank counts change nothing.
   rotor_.resize(nlocal);
+  using Batch = RotorBatch;
+  double *const b = rotor_.data.data(); // column c, atom k: b[c * stride + k]
+  const std::size_t stride = rotor_.stride;
+  int *const batch_atom = rotor_.atom.data();
   int n = 0;
   for (int i = 0; i < nlocal; ++i) {
     if (!(mask[i] & groupbit))
       continue;
-    // Right after read_restart: the forces of the step the file was written at.
-    particles_->take_restored_force_and_torque(i, f[i], torque[i]);
-    const double dtfm = dtf_ / rmass[i];
+    const MassProperties &m = mass_properties(i, rmass[i]);
     for (int k = 0; k < 3; ++k) {
-      v[i][k] += dtfm * f[i][k];
+      v[i][k] += m.dtfm * f[i][k];
       x[i][k] += dtv_ * v[i][k];
     }
-    const double *t = torque[i];
-    const Eigen::Vector3d L = particles_->angular_momentum(i) + dtf_ * Eigen::Vector3d(t[0], t[1], t[2]);
-    const Eigen::Quaterniond q = particles_->orientation(i);
-    const Eigen::Vector3d inertia = particles_->principal_inertia(i);
-    rotor_.set(n, i, q, L, inertia);
+    kick_rotation(i, dtf_); // L is not changed by the free rotation: final here
+    const double *q = particles_->orientation_data(i), *l = particles_->angular_momentum_data(i);
+    batch_atom[n] = i;
+    for (int c = 0; c < 4; ++c)
+      b[(Batch::qw + c) * stride + n] = q[c];
+    for (int c = 0; c < 3; ++c) {
+      b[(Batch::lx + c) * stride + n] = l[c];
+      b[(Batch::i0 + c) * stride + n] = m.inertia[c];
+      b[(Batch::v0 + c) * stride + n] = m.inverse[c];
+    }
     ++n;
   }
-  tri::rotate_free_many(n, rotor_.qw.data(), rotor_.qx.data(), rotor_.qy.data(), rotor_.qz.data(),
-                        rotor_.lx.data(), rotor_.ly.data(), rotor_.lz.data(), rotor_.i0.data(),
-                        rotor_.i1.data(), rotor_.i2.data(), dtv_, rotor_.wx.data(),
-                        rotor_.wy.data(), rotor_.wz.data(), rotor_.large.data());
+  tri::rotate_free_many(n, rotor_.column(Batch::qw), rotor_.column(Batch::qx),
+                        rotor_.column(Batch::qy), rotor_.column(Batch::qz),
+                        rotor_.column(Batch::lx), rotor_.column(Batch::ly),
+                        rotor_.column(Batch::lz), rotor_.column(Batch::i0),
+                        rotor_.column(Batch::i1), rotor_.column(Batch::i2),
+                        rotor_.column(Batch::v0), rotor_.column(Batch::v1),
+                        rotor_.column(Batch::v2), dtv_, rotor_.column(Batch::wx),
+                        rotor_.column(Batch::wy), rotor_.column(Batch::wz), rotor_.large.data());
   double **omega = atom->omega;
   for (int k = 0; k < n; ++k) {
-    const int i = rotor_.atom[k];
-    particles_->set_orientation(i, Eigen::Quaterniond(rotor_.qw[k], rotor_.qx[k], rotor_.qy[k],
-                                                      rotor_.qz[k]));
-    particles_->set_angular_momentum(i, Eigen::Vector3d(rotor_.lx[k], rotor_.ly[k], rotor_.lz[k]));
-    omega[i][0] = rotor_.wx[k];
-    omega[i][1] = rotor_.wy[k];
-    omega[i][2] = rotor_.wz[k];
+    const int i = batch_atom[k];
+    double *q = particles_->orientation_data(i);
+    for (int c = 0; c < 4; ++c)
+      q[c] = b[(Batch::qw + c) * stride + k];
+    for (int c = 0; c < 3; ++c)
+      omega[i][c] = b[(Batch::wx + c) * stride + k];
   }
 }
 
 void FixTriNVE::RotorBatch::resize(int n) {
   const std::size_t m = static_cast<std::size_t>(n);
-  for (std::vector<double> *a : {&qw, &qx, &qy, &qz, &lx, &ly, &lz, &i0, &i1, &i2, &wx, &wy, &wz})
-    if (a->size() < m)
-      a->resize(m);
-  if (atom.size() < m) {
-    atom.resize(m);
-    large.resize(m);
+  if (stride < m) {
+    // Whole cache lines, plus one: columns a power of two apart (512 atoms: 4 KiB) would all
+    // fall into the same L1 set, and the batch's 16 columns would evict each other.
+    stride = (m + 7) / 8 * 8 + 8;
+    data.resize(columns * stride);
+    atom.resize(stride); // every array holds `stride` atoms: n <= stride is all a step checks
+    large.resize(stride);
   }
-}
-
-void FixTriNVE::RotorBatch::set(int k, int i, const Eigen::Quaterniond &q,
-                                const Eigen::Vector3d &l, const Eigen::Vector3d &inertia) {
-  atom[k] = i;
-  qw[k] = q.w(), qx[k] = q.x(), qy[k] = q.y(), qz[k] = q.z();
-  lx[k] = l.x(), ly[k] = l.y(), lz[k] = l.z();
-  i0[k] = inertia.x(), i1[k] = inertia.y(), i2[k] = inertia.z();
 }
 
 void FixTriNVE::final_integrate() {
-  double **v = atom->v, **f = atom->f;
+  double **v = atom->v, **f = atom->f, **omega = atom->omega;
   const double *rmass = atom->rmass;
   const int *mask = atom->mask;
   const int nlocal = atom->nlocal;
-  // The second kick per atom; omega from q and L for all atoms at once (vectorised, each
-  // atom's bits those of sync_omega).
-  rotor_.resize(nlocal);
-  int n = 0;
+  // The second kick and omega from q and L, atom by atom: omega is a few dozen flops once the
+  // inverse moments are at hand, less than copying the atom into a batch and back (the bits
+  // of tri::angular_velocity_unit and of sync_omega).
   for (int i = 0; i < nlocal; ++i) {
     if (!(mask[i] & groupbit))
       continue;
-    const double dtfm = dtf_ / rmass[i];
+    const MassProperties &m = mass_properties(i, rmass[i]);
     for (int k = 0; k < 3; ++k)
-      v[i][k] += dtfm * f[i][k];
+      v[i][k] += m.dtfm * f[i][k];
     kick_rotation(i, dtf_);
-    rotor_.set(n, i, particles_->orientation(i), particles_->angular_momentum(i),
-               particles_->principal_inertia(i));
-    ++n;
-  }
-  tri::angular_velocity_unit_many(n, rotor_.qw.data(), rotor_.qx.data(), rotor_.qy.data(),
-                                  rotor_.qz.data(), rotor_.lx.data(), rotor_.ly.data(),
-                                  rotor_.lz.data(), rotor_.i0.data(), rotor_.i1.data(),
-                                  rotor_.i2.data(), rotor_.wx.data(), rotor_.wy.data(),
-                                  rotor_.wz.data());
-  double **omega = atom->omega;
-  for (int k = 0; k < n; ++k) {
-    const int i = rotor_.atom[k];
-    omega[i][0] = rotor_.wx[k];
-    omega[i][1] = rotor_.wy[k];
-    omega[i][2] = rotor_.wz[k];
+    tri::rigid_detail::omega_of_unit(particles_->orientation_data(i),
+                                     particles_->angular_momentum_data(i), m.inverse, omega[i]);
   }
 }

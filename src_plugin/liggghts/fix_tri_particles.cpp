@@ -332,6 +332,7 @@ int FixTriParticles::pack_exchange(int i, double *buf) {
 int FixTriParticles::unpack_exchange(int nlocal, double *buf) {
   std::memcpy(state_[nlocal], buf, kValues * sizeof(double));
   std::memcpy(pending_[nlocal], buf + kValues, kPending * sizeof(double));
+  any_pending_ = any_pending_ || pending_[nlocal][kFlag] == 1.0;
   return kValues + kPending;
 }
 
@@ -386,6 +387,7 @@ void FixTriParticles::unpack_restart(int nlocal, int nth) {
   const double *record = tri_liggghts::restart_record(atom->extra, nlocal, nth);
   std::memcpy(state_[nlocal], record, kValues * sizeof(double));
   std::memcpy(pending_[nlocal], record + kValues, kPending * sizeof(double));
+  any_pending_ = any_pending_ || pending_[nlocal][kFlag] == 1.0;
 }
 
 int FixTriParticles::size_restart(int) { return kValues + kPending + 1; }
@@ -401,6 +403,17 @@ bool FixTriParticles::take_restored_force_and_torque(int i, double *f, double *t
   }
   s[kFlag] = 0.0;
   return true;
+}
+
+void FixTriParticles::take_restored_forces_and_torques(int groupbit) {
+  if (!any_pending_)
+    return;
+  any_pending_ = false;
+  for (int i = 0; i < atom->nlocal; ++i) {
+    if (atom->mask[i] & groupbit)
+      take_restored_force_and_torque(i, atom->f[i], atom->torque[i]);
+    any_pending_ = any_pending_ || pending_[i][kFlag] == 1.0; // outside the group: kept
+  }
 }
 
 // The shapes themselves are rebuilt from the deck; the restart file keeps what the deck must

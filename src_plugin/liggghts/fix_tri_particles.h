@@ -103,12 +103,18 @@ public:
     d[1] = L.y();
     d[2] = L.z();
   }
+  // The same in place, (w, x, y, z) and (Lx, Ly, Lz): fix tri/nve's per-step loops.
+  double *orientation_data(int i) { return state_[i] + kQuatColumn; }
+  double *angular_momentum_data(int i) { return state_[i] + kAngmomColumn; }
   // A continuous run starts step N+1 with the forces of step N, which depend on the half-step
   // velocity v(N - 1/2); a run continued from a restart file can only recompute them from
   // v(N). So the restart file carries the step-N force and torque of each particle, and the
   // first time integration after read_restart takes them from here (once; true if it did),
   // which makes "N steps + restart + N steps" bitwise equal to "2N steps".
   bool take_restored_force_and_torque(int i, double *f, double *torque);
+  // The same for every atom of the group (fix tri/nve, each step): a test of one flag unless
+  // a restart file (or an atom migrating with its record) left something pending on this rank.
+  void take_restored_forces_and_torques(int groupbit);
   // Principal moments of atom i, kg m^2, scaled with its rmass (so `set mass` stays consistent).
   Eigen::Vector3d principal_inertia(int i) const {
     const tri::Shape &s = shapes_[shape_index(i)];
@@ -158,6 +164,9 @@ private:
   std::uint64_t assign_seed_ = 0, orient_seed_ = 0;
   double **state_ = nullptr;
   double **pending_ = nullptr; // per atom: f(3), torque(3), flag
+  // Some atom of this rank may have its flag set (read_restart, or one arrived with it); false
+  // once every pending atom was taken, so a step pays no per-atom look.
+  bool any_pending_ = false;
 
   tri_liggghts::ContactBoard board_;
   std::unique_ptr<tri_liggghts::RunSafetyMonitor> monitor_;

@@ -70,14 +70,23 @@ void PairTriGran::collect_tasks() {
   tasks_.clear();
   task_atoms_.clear();
   candidates_.begin_step();
-  for (int ii = 0; ii < list->inum; ++ii) {
-    const int i = list->ilist[ii];
-    const int *jlist = list->firstneigh[i];
-    for (int jj = 0; jj < list->numneigh[i]; ++jj) {
+  // Every neighbour pair every step, most of them apart: the arrays in locals, which the
+  // stores below cannot change (through atom-> they are reloaded for every pair).
+  double *const *const x = atom->x;
+  const double *const radius = atom->radius;
+  const tagint *const tag = atom->tag;
+  const int inum = list->inum;
+  const int *const ilist = list->ilist, *const numneigh = list->numneigh;
+  int *const *const firstneigh = list->firstneigh;
+  for (int ii = 0; ii < inum; ++ii) {
+    const int i = ilist[ii];
+    const int *jlist = firstneigh[i];
+    const double xi = x[i][0], yi = x[i][1], zi = x[i][2], ri = radius[i];
+    const int jnum = numneigh[i];
+    for (int jj = 0; jj < jnum; ++jj) {
       const int j = jlist[jj] & NEIGHMASK;
-      const double dx = atom->x[i][0] - atom->x[j][0], dy = atom->x[i][1] - atom->x[j][1],
-                   dz = atom->x[i][2] - atom->x[j][2];
-      const double reach = atom->radius[i] + atom->radius[j];
+      const double dx = xi - x[j][0], dy = yi - x[j][1], dz = zi - x[j][2];
+      const double reach = ri + radius[j];
       double *values = first_history ? &first_history[i][dnum * jj] : nullptr;
       int *touching = first_touch ? &first_touch[i][jj] : nullptr;
       if (dx * dx + dy * dy + dz * dz >= reach * reach) {
@@ -92,11 +101,9 @@ void PairTriGran::collect_tasks() {
       double *history = values && tangential ? values : nullptr;
       double *axis = values && settings_.separation ? values + axis_offset_ : nullptr;
       tri::CandidateCache *candidates =
-          coherent ? candidates_.entry(tri_liggghts::CandidateStore::pair_key(atom->tag[i],
-                                                                                atom->tag[j]))
+          coherent ? candidates_.entry(tri_liggghts::CandidateStore::pair_key(tag[i], tag[j]))
                    : nullptr;
-      tasks_.push_back(
-          {i, j, atom->tag[j] < atom->tag[i], history, axis, values, touching, candidates});
+      tasks_.push_back({i, j, tag[j] < tag[i], history, axis, values, touching, candidates});
       task_atoms_.push_back(i);
       task_atoms_.push_back(j);
     }

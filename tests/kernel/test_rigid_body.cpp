@@ -258,19 +258,21 @@ TEST(RigidBody, BatchedRotorGivesEachAtomTheSingleRotorsBits) {
   bool saw_fast = false;
   for (int size = 1; size <= count; ++size) {
     for (int first = 0; first + size <= count; first += std::max(1, size / 2)) {
-      std::vector<double> qw, qx, qy, qz, lx, ly, lz, i0, i1, i2;
+      std::vector<double> qw, qx, qy, qz, lx, ly, lz, i0, i1, i2, v0, v1, v2;
       for (int k = first; k < first + size; ++k) {
         qw.push_back(q0[k].w()), qx.push_back(q0[k].x()), qy.push_back(q0[k].y()),
             qz.push_back(q0[k].z());
         lx.push_back(l0[k].x()), ly.push_back(l0[k].y()), lz.push_back(l0[k].z());
         i0.push_back(inertia[k].x()), i1.push_back(inertia[k].y()), i2.push_back(inertia[k].z());
+        v0.push_back(1.0 / i0.back()), v1.push_back(1.0 / i1.back()), v2.push_back(1.0 / i2.back());
       }
       std::vector<double> wx(size), wy(size), wz(size);
       std::vector<int> large(size);
       for (int step = 0; step < 3; ++step) {
         tri::rotate_free_many(size, qw.data(), qx.data(), qy.data(), qz.data(), lx.data(),
-                              ly.data(), lz.data(), i0.data(), i1.data(), i2.data(), dt,
-                              wx.data(), wy.data(), wz.data(), large.data());
+                              ly.data(), lz.data(), i0.data(), i1.data(), i2.data(), v0.data(),
+                              v1.data(), v2.data(), dt, wx.data(), wy.data(), wz.data(),
+                              large.data());
       }
       for (int j = 0; j < size; ++j) {
         const int k = first + j;
@@ -294,36 +296,4 @@ TEST(RigidBody, BatchedRotorGivesEachAtomTheSingleRotorsBits) {
     }
   }
   EXPECT_TRUE(saw_fast); // the std::sin / std::cos pass was exercised
-}
-
-// fix tri/nve's second half step computes omega for all atoms at once: each must be
-// angular_velocity_unit's bits, in every lane and remainder position (batches 1..19).
-TEST(RigidBody, BatchedAngularVelocityGivesEachAtomTheSingleBits) {
-  const int count = 19;
-  std::vector<double> qw, qx, qy, qz, lx, ly, lz, i0, i1, i2;
-  std::vector<Quaterniond> q(count);
-  std::vector<Vector3d> l(count), inertia(count);
-  for (int k = 0; k < count; ++k) {
-    q[k] = tri::random_orientation(9, k);
-    inertia[k] = Vector3d(1.0 + 0.3 * k, 2.0 + 0.1 * k, 3.0 - 0.04 * k) * kInertiaScale;
-    l[k] = Vector3d(std::sin(3.0 * k), std::cos(k), 0.3 + 0.01 * k) * 1e-7;
-    qw.push_back(q[k].w()), qx.push_back(q[k].x()), qy.push_back(q[k].y()), qz.push_back(q[k].z());
-    lx.push_back(l[k].x()), ly.push_back(l[k].y()), lz.push_back(l[k].z());
-    i0.push_back(inertia[k].x()), i1.push_back(inertia[k].y()), i2.push_back(inertia[k].z());
-  }
-  for (int size = 1; size <= count; ++size) {
-    const int first = count - size;
-    std::vector<double> wx(size), wy(size), wz(size);
-    tri::angular_velocity_unit_many(size, &qw[first], &qx[first], &qy[first], &qz[first],
-                                    &lx[first], &ly[first], &lz[first], &i0[first], &i1[first],
-                                    &i2[first], wx.data(), wy.data(), wz.data());
-    for (int j = 0; j < size; ++j) {
-      const int k = first + j;
-      const Vector3d w = tri::angular_velocity_unit(q[k], l[k], inertia[k].cwiseInverse());
-      const std::string what = "atom " + std::to_string(k) + " of a batch of " + std::to_string(size);
-      ASSERT_EQ(w.x(), wx[j]) << what;
-      ASSERT_EQ(w.y(), wy[j]) << what;
-      ASSERT_EQ(w.z(), wz[j]) << what;
-    }
-  }
 }
