@@ -155,11 +155,14 @@ PairForceResult body_interaction(const Body &a, const Body &b, const Interaction
   scratch.triangle_contacts.clear();
   if (coherent && cache.candidates->covers(pose_a, *a.triangles, pose_b, *b.triangles, cutoff)) {
     ++stats.candidates_kept;
+    if (cache.update)
+      cache.candidates->note_use();
     contacts_among_candidates(*a.triangles, a.epsilon, *b.triangles, b.epsilon, s.distance,
                               cache.candidates->pairs(), cache.candidates->count(),
                               scratch.triangle_contacts, stats, scratch.distance);
   } else {
-    const double reach = coherent ? s.coherence * cutoff : 0.0;
+    const bool keep = coherent && cache.update && cache.candidates->worth_keeping();
+    const double reach = keep ? s.coherence * cutoff : 0.0;
     const double margin = cutoff + reach;
     // A wall patch: its triangles whose plane a lies beyond (either side) cannot touch a; if
     // that is all of them, a touches nothing, also where no single axis separates a from the
@@ -175,7 +178,7 @@ PairForceResult body_interaction(const Body &a, const Body &b, const Interaction
     contacts_among_candidates(*a.triangles, a.epsilon, *b.triangles, b.epsilon, s.distance,
                               scratch.distance.pairs.data(), count, scratch.triangle_contacts,
                               stats, scratch.distance);
-    if (coherent && cache.update)
+    if (keep)
       cache.candidates->keep(pose_a, *a.triangles, pose_b, *b.triangles, cutoff, reach,
                              scratch.distance.pairs.data(), count, scratch.distance.results.data());
   }

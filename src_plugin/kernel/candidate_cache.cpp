@@ -69,6 +69,18 @@ bool CandidateCache::covers(const RigidPose *pose_a, const TriangleSoA &a, const
   return moved(a_, pose_a, a, b_, pose_b, b, cutoff + reach_) < reach_;
 }
 
+bool CandidateCache::worth_keeping() {
+  if (valid_ && uses_ == 0) {
+    pause_ = kPausedSearches;
+    valid_ = false;
+  }
+  if (pause_ > 0) {
+    --pause_;
+    return false;
+  }
+  return true;
+}
+
 bool CandidateCache::proves_apart(const RigidPose *pose_a, const TriangleSoA &a,
                                   const RigidPose *pose_b, const TriangleSoA &b,
                                   double cutoff) const {
@@ -95,6 +107,7 @@ void CandidateCache::keep(const RigidPose *pose_a, const TriangleSoA &a, const R
   record(pose_b, b, b_);
   cutoff_ = cutoff;
   reach_ = reach;
+  uses_ = 0;
   if (!results) {
     pairs_.assign(pairs, pairs + count);
   } else {

@@ -72,6 +72,13 @@ public:
             const TriangleSoA &b, double cutoff, double reach, const TrianglePairIndex *pairs,
             int count, const TrianglePairDistance *results = nullptr);
 
+  // Whether a search should keep its list (with the wider margin). Not for a while after a list
+  // that was never used: bodies that move more than the reach in one step (a collision, a fast
+  // flow) would only pay the margin's extra pairs at every search. Tried again after
+  // kPausedSearches searches. A heuristic on cost only: the contacts are the same either way.
+  bool worth_keeping();
+  void note_use() { ++uses_; }
+
   // True when a kept gap still proves every pair at least `cutoff` apart.
   bool proves_apart(const RigidPose *pose_a, const TriangleSoA &a, const RigidPose *pose_b,
                     const TriangleSoA &b, double cutoff) const;
@@ -102,7 +109,10 @@ private:
                       const Pose &b, const RigidPose *pose_b, const TriangleSoA &tb,
                       double length);
 
+  static constexpr int kPausedSearches = 8;
   bool valid_ = false; // candidates kept
+  int uses_ = 0;       // steps the kept list served
+  int pause_ = 0;      // searches left that keep no list
   double cutoff_ = 0.0, reach_ = 0.0;
   Pose a_, b_;
   bool gap_valid_ = false; // a gap kept
