@@ -32,7 +32,8 @@ double CandidateCache::displacement(const Pose &then, const RigidPose *rigid, co
     return kUnbounded;
   if (rigid) {
     const RigidPose &p0 = then.pose;
-    if (rigid->radius != p0.radius || rigid->frame != p0.frame)
+    // A pose without a radius bounds nothing (a body whose host did not describe it).
+    if (!(rigid->radius > 0.0) || rigid->radius != p0.radius || rigid->frame != p0.frame)
       return kUnbounded;
     const Eigen::Quaterniond turn = rigid->q * p0.q.conjugate();
     magnitude = std::max(rigid->x.cwiseAbs().maxCoeff(), p0.x.cwiseAbs().maxCoeff()) +

@@ -76,6 +76,9 @@ TEST(CandidateCache, MotionBoundAtTheEdgeOfTheReach) {
   other_shape.frame = &s.soa; // another particle under the same tag
   EXPECT_FALSE(cache.covers(&other_shape, w, &p, w, 2e-4));
   EXPECT_FALSE(cache.covers(&p, w, nullptr, w, 2e-4)); // a wall where a particle was
+  RigidPose undescribed; // radius 0: a host that set no pose gets no reuse
+  cache.keep(&undescribed, w, &p, w, 2e-4, 1e-5, nullptr, 0);
+  EXPECT_FALSE(cache.covers(&undescribed, w, &p, w, 2e-4));
 }
 
 // A wall patch is compared vertex by vertex: a moved vertex beyond the reach, or a patch that
