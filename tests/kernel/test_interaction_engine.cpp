@@ -2,6 +2,7 @@
 // exceptions caught per task and reported for the lowest failing task, forces summed in
 // (atom, partner) order whatever the order of contribution; and body_interaction's contract
 // (pair symmetry, walls as rigidly moving bodies of infinite mass).
+#include "body_pair_helpers.h"
 #include "interaction_engine.h"
 
 #include "random_rock.h"
@@ -54,16 +55,7 @@ std::vector<Particle> touching_row(int n) {
   return ps;
 }
 
-tri::InteractionSettings settings() {
-  tri::InteractionSettings s;
-  s.coefficients.kn = 2000;
-  s.coefficients.kt = 1000;
-  s.coefficients.gamman = 20;
-  s.coefficients.gammat = 10;
-  s.coefficients.mu = 0.5;
-  s.coefficients.limit_force = true;
-  return s;
-}
+tri::InteractionSettings settings() { return tri_test::settings(true); }
 
 struct EngineRun {
   std::vector<tri::PairForceResult> results;
