@@ -182,7 +182,9 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
                         std::vector<ContactPolygon> &polygons,
                         std::vector<double> &polygon_exact) {
   ContactPoint p;
-  polygons.clear();
+  // `polygons` only grows: entries [0, num_polygons) are this class's. Reusing the slots keeps
+  // emplace_back from zeroing a 3 KB ContactPolygon per member (value-initialisation).
+  std::size_t num_polygons = 0;
   polygon_exact.clear();
   const Raw &s = raw[seed];
   double deepest_plain = -std::numeric_limits<double>::infinity(); // members without a polygon
@@ -197,12 +199,13 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
     ++p.num_merged;
     if (absorbed[i])
       continue; // rim contacts count, but neither place nor orient the contact
-    polygons.emplace_back(); // filled in place: a ContactPolygon is 3 KB
-    if (member_polygon(r, faces, layer, polygons.back())) {
+    if (num_polygons == polygons.size())
+      polygons.emplace_back();
+    if (member_polygon(r, faces, layer, polygons[num_polygons])) { // filled in place
+      ++num_polygons;
       polygon_exact.push_back(!(r.intersecting || r.overlap > layer) ? layer : -1.0);
       D_poly = std::max(D_poly, exact_overlap(r, faces, layer));
     } else {
-      polygons.pop_back();
       deepest_plain = std::max(deepest_plain, r.overlap);
     }
   }
@@ -239,7 +242,7 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
       normal = finite(s.normal) ? s.normal : ref;
   };
 
-  if (polygons.empty()) {
+  if (num_polygons == 0) {
     kernel_deepest(s.overlap, false, p.point, p.normal);
     p.overlap = p.energy_overlap = s.overlap;
     return p;
@@ -252,8 +255,8 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
   // deepest point of its polygon; where the closest points are an edge-edge pair inside the
   // polygons the corners may lie below the exact D).
   double deepest_corner = 0.0;
-  for (const ContactPolygon &poly : polygons)
-    deepest_corner = std::max(deepest_corner, poly.max_overlap);
+  for (std::size_t k = 0; k < num_polygons; ++k)
+    deepest_corner = std::max(deepest_corner, polygons[k].max_overlap);
   const double level = std::min(D_poly, deepest_corner) - taper;
   double excess = 0.0;
   Vector3d excess1 = Vector3d::Zero(), excess_normal = Vector3d::Zero();
@@ -262,7 +265,7 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
   Eigen::Matrix3d area2 = Eigen::Matrix3d::Zero();
   Vector3d gradient1 = Vector3d::Zero();
   double gradient2 = 0.0;
-  for (std::size_t k = 0; k < polygons.size(); ++k) {
+  for (std::size_t k = 0; k < num_polygons; ++k) {
     const ContactPolygon &poly = polygons[k];
     // Each polygon's deepest region, tapered (continuous in the geometry): its weight is the
     // excess of o over the level integrated over the polygon (mesh-independent), its point the
@@ -368,7 +371,8 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
   // The mean distance of the patch from the point, over the same polygons, projected onto the
   // contact plane (numerator and denominator alike).
   DistanceIntegral dist;
-  for (const ContactPolygon &poly : polygons) {
+  for (std::size_t k = 0; k < num_polygons; ++k) {
+    const ContactPolygon &poly = polygons[k];
     const DistanceIntegral one =
         polygon_distance_integral(poly.vertices, poly.num_vertices, p.point, p.normal);
     dist.area += one.area;

@@ -5,12 +5,15 @@
 namespace tri_liggghts {
 
 void CandidateStore::end_step() {
+  if (touched_ == entries_.size())
+    return; // every entry was asked for: nothing to drop (the settled pile's usual step)
   for (auto it = entries_.begin(); it != entries_.end();)
     it = it->second.step == step_ ? std::next(it) : entries_.erase(it);
 }
 
 std::size_t CandidateStore::bytes() const {
-  std::size_t total = entries_.bucket_count() * sizeof(void *);
+  std::size_t total = entries_.bucket_count() * sizeof(void *) +
+                      (hints_.capacity() + next_hints_.capacity()) * sizeof(Entry *);
   for (const auto &e : entries_)
     total += sizeof(e) + 2 * sizeof(void *) + e.second.cache.bytes();
   return total;

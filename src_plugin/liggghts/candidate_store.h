@@ -5,9 +5,15 @@
 // it is dropped, so memory follows the pairs within reach. Nothing here is written to restart
 // files: a restarted run searches afresh, with the same contacts (candidate_cache.h).
 //
-// Use: begin_step(); for each task, serially, entry(key) (pointers stay valid while the map
-// grows: std::unordered_map never moves its elements); evaluate the tasks (threads may use
+// Use: begin_step(); for each task, serially, entry(slot, key) (pointers stay valid while the
+// map grows: std::unordered_map never moves its elements); evaluate the tasks (threads may use
 // their own entries); end_step() drops what was not asked for.
+//
+// `slot` is the task's index in the step's task list. Between neighbour-list rebuilds the list
+// is the same every step, so the entry a slot named last step is almost always the one it
+// names now: it is tried first (its key compared), and the hash map is searched only when it
+// differs. Such a hint is always valid: it was asked for last step, so last step's end_step
+// kept it, and hints are renewed every step.
 #pragma once
 
 #include "candidate_cache.h"
@@ -15,16 +21,30 @@
 #include <cstddef>
 #include <cstdint>
 #include <unordered_map>
+#include <vector>
 
 namespace tri_liggghts {
 
 class CandidateStore {
 public:
-  void begin_step() { ++step_; }
-  tri::CandidateCache *entry(std::uint64_t key) {
-    Entry &e = entries_[key];
-    e.step = step_;
-    return &e.cache;
+  void begin_step() {
+    ++step_;
+    touched_ = 0;
+    hints_.swap(next_hints_);
+    next_hints_.clear();
+  }
+  tri::CandidateCache *entry(std::size_t slot, std::uint64_t key) {
+    Entry *e = slot < hints_.size() ? hints_[slot] : nullptr;
+    if (!e || e->key != key) {
+      e = &entries_[key];
+      e->key = key;
+    }
+    if (next_hints_.size() <= slot)
+      next_hints_.resize(slot + 1, nullptr);
+    next_hints_[slot] = e;
+    touched_ += e->step != step_;
+    e->step = step_;
+    return &e->cache;
   }
   void end_step();
   std::size_t bytes() const;
@@ -37,8 +57,11 @@ private:
   struct Entry {
     tri::CandidateCache cache;
     long long step = 0;
+    std::uint64_t key = 0;
   };
   std::unordered_map<std::uint64_t, Entry> entries_;
+  std::vector<Entry *> hints_, next_hints_; // by slot: last step's entries, this step's
+  std::size_t touched_ = 0;                 // entries asked for this step
   long long step_ = 0;
 };
 

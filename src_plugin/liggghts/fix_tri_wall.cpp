@@ -167,7 +167,8 @@ void FixTriWall::collect_tasks() {
         task.triangles.push_back(p.second);
       task.candidates =
           settings_.interaction.coherence > 0.0
-              ? candidates_.entry(tri_liggghts::CandidateStore::wall_key(atom->tag[a],
+              ? candidates_.entry(ntasks_ - 1,
+                                  tri_liggghts::CandidateStore::wall_key(atom->tag[a],
                                                                          static_cast<int>(m)))
               : nullptr;
     }

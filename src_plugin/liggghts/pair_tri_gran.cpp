@@ -101,7 +101,8 @@ void PairTriGran::collect_tasks() {
       double *history = values && tangential ? values : nullptr;
       double *axis = values && settings_.separation ? values + axis_offset_ : nullptr;
       tri::CandidateCache *candidates =
-          coherent ? candidates_.entry(tri_liggghts::CandidateStore::pair_key(tag[i], tag[j]))
+          coherent ? candidates_.entry(tasks_.size(),
+                                        tri_liggghts::CandidateStore::pair_key(tag[i], tag[j]))
                    : nullptr;
       tasks_.push_back({i, j, tag[j] < tag[i], history, axis, values, touching, candidates});
       task_atoms_.push_back(i);
