@@ -47,7 +47,22 @@ std::size_t InteractionScratch::bytes() const {
          (r.points.capacity() + nodes.capacity() + node_velocities.capacity()) *
              sizeof(Eigen::Vector3d) +
          ints * sizeof(int) + wall_apart.capacity() +
-         4 * wall_planes.n_x.capacity() * sizeof(double);
+         4 * wall_planes.n_x.capacity() * sizeof(double) + jobs.capacity() * sizeof(HybridJob) +
+         job_offsets.capacity() * sizeof(std::size_t) +
+         job_results.capacity() * sizeof(TrianglePairDistance);
+}
+
+void InteractionScratch::run_jobs(HybridCounters &stats) {
+  std::size_t total = 0;
+  job_offsets.resize(jobs.size());
+  for (std::size_t j = 0; j < jobs.size(); ++j) {
+    job_offsets[j] = total;
+    total += static_cast<std::size_t>(jobs[j].count);
+  }
+  job_results.resize(total);
+  for (std::size_t j = 0; j < jobs.size(); ++j)
+    jobs[j].out = job_results.data() + job_offsets[j];
+  hybrid_distances_jobs(jobs.data(), static_cast<int>(jobs.size()), stats);
 }
 
 namespace {
@@ -125,9 +140,37 @@ bool walls_apart_by_planes(const TriangleSoA &particle, const TriangleSoA &wall,
 
 } // namespace
 
+namespace {
+
+// What follows the distance kernel, once scratch.triangle_contacts holds the pair's triangle
+// contacts and scratch.distance its kernel results: the kept axis, the reduction, the force.
+PairForceResult after_kernel(const Body &a, const Body &b, const InteractionSettings &s,
+                             double dt, double *history, InteractionScratch &scratch,
+                             SeparationCache cache);
+
+// The second call for a pair whose job the engine ran (InteractionScratch::resume_job).
+PairForceResult resume_after_kernel(const Body &a, const Body &b, const InteractionSettings &s,
+                                    double dt, double *history, InteractionScratch &scratch,
+                                    ContactStats &stats, SeparationCache cache) {
+  const HybridJob &job = scratch.jobs[static_cast<std::size_t>(scratch.resume_job)];
+  const TrianglePairDistance *results =
+      scratch.job_results.data() + scratch.job_offsets[static_cast<std::size_t>(scratch.resume_job)];
+  ContactWorkspace &ws = scratch.distance; // as contacts_among_candidates leaves it
+  ws.results.assign(results, results + job.count);
+  ws.tested = job.count;
+  scratch.triangle_contacts.clear();
+  contacts_from_results(job.pairs, results, job.count, a.epsilon + b.epsilon,
+                        scratch.triangle_contacts, stats);
+  return after_kernel(a, b, s, dt, history, scratch, cache);
+}
+
+} // namespace
+
 PairForceResult body_interaction(const Body &a, const Body &b, const InteractionSettings &s,
                                  double dt, double *history, InteractionScratch &scratch,
                                  ContactStats &stats, SeparationCache cache) {
+  if (scratch.resume_job >= 0)
+    return resume_after_kernel(a, b, s, dt, history, scratch, stats, cache);
   const double cutoff = a.epsilon + b.epsilon;
   const RigidPose *pose_a = &a.pose, *pose_b = b.is_wall() ? nullptr : &b.pose;
   CandidateCache *kept = s.coherence > 0.0 ? cache.candidates : nullptr;
@@ -157,6 +200,12 @@ PairForceResult body_interaction(const Body &a, const Body &b, const Interaction
     ++stats.candidates_kept;
     if (cache.update)
       cache.candidates->note_use();
+    if (scratch.defer && can_queue_candidates(s.distance)) {
+      scratch.jobs.push_back(queue_candidates(*a.triangles, a.epsilon, *b.triangles, b.epsilon,
+                                              s.distance, cache.candidates->pairs(),
+                                              cache.candidates->count(), stats));
+      return PairForceResult{};
+    }
     contacts_among_candidates(*a.triangles, a.epsilon, *b.triangles, b.epsilon, s.distance,
                               cache.candidates->pairs(), cache.candidates->count(),
                               scratch.triangle_contacts, stats, scratch.distance);
@@ -182,6 +231,17 @@ PairForceResult body_interaction(const Body &a, const Body &b, const Interaction
       cache.candidates->keep(pose_a, *a.triangles, pose_b, *b.triangles, cutoff, reach,
                              scratch.distance.pairs.data(), count, scratch.distance.results.data());
   }
+  return after_kernel(a, b, s, dt, history, scratch, cache);
+}
+
+namespace {
+
+PairForceResult after_kernel(const Body &a, const Body &b, const InteractionSettings &s,
+                             double dt, double *history, InteractionScratch &scratch,
+                             SeparationCache cache) {
+  const double cutoff = a.epsilon + b.epsilon;
+  const RigidPose *pose_a = &a.pose, *pose_b = b.is_wall() ? nullptr : &b.pose;
+  CandidateCache *kept = s.coherence > 0.0 ? cache.candidates : nullptr;
   if (cache.axis && cache.update) {
     const Eigen::Vector3d axis = scratch.triangle_contacts.empty()
                                      ? new_separating_axis(a, b, cutoff, scratch.distance)
@@ -218,5 +278,7 @@ PairForceResult body_interaction(const Body &a, const Body &b, const Interaction
   r.depth_limit = deep_contact_limit(a.thinnest, b.thinnest);
   return r;
 }
+
+} // namespace
 
 } // namespace tri

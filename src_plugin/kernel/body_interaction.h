@@ -39,6 +39,22 @@ struct InteractionScratch {
   // Wall triangles proven apart from the particle by their own planes, and those planes.
   std::vector<std::uint8_t> wall_apart;
   TrianglePlanes wall_planes;
+  // Kernel work deferred by the engine (interaction_engine.h). While `defer` is set, a body
+  // pair served by its kept candidates queues its hybrid job (queue_candidates) and returns
+  // at once with an empty result; the engine runs the queued jobs together (their retries and
+  // fallbacks fill the vector lanes across body pairs) and calls again with `resume_job` set
+  // to the pair's job, which goes on from the results exactly where the direct call would.
+  bool defer = false;
+  int resume_job = -1;
+  std::vector<HybridJob> jobs;
+  std::vector<std::size_t> job_offsets; // job j's results: job_results[job_offsets[j]...]
+  std::vector<TrianglePairDistance> job_results;
+  // Runs the queued jobs (counters into `stats`); the results stay until the next clear_jobs.
+  void run_jobs(HybridCounters &stats);
+  void clear_jobs() {
+    jobs.clear();
+    job_offsets.clear();
+  }
 
   std::size_t bytes() const; // heap memory held (approximate for the reduction's vectors)
 };

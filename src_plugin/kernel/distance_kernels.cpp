@@ -28,15 +28,15 @@ void gather(const TriangleSoA &a, const TriangleSoA &b, const TrianglePairIndex 
 }
 
 // Collects pairs for brute force and runs brute_force_block whenever kPairLanes are pending,
-// so that a low fallback rate still fills the vector lanes.
+// so that a low fallback rate still fills the vector lanes. Pairs may come from different
+// triangle lists (body pairs).
 class PendingBruteForce {
 public:
-  PendingBruteForce(const TriangleSoA &a, const TriangleSoA &b, TrianglePairDistance *out)
-      : a_(a), b_(b), out_(out) {}
   ~PendingBruteForce() { flush(); }
-  void add(const TrianglePairIndex &pair, int out_index) {
-    block_.set_lane(n_, a_, pair.a, b_, pair.b);
-    target_[n_++] = out_index;
+  void add(const TriangleSoA &a, const TriangleSoA &b, const TrianglePairIndex &pair,
+           TrianglePairDistance *out) {
+    block_.set_lane(n_, a, pair.a, b, pair.b);
+    target_[n_++] = out;
     if (n_ == kPairLanes)
       flush();
   }
@@ -48,15 +48,13 @@ public:
     TrianglePairDistance result[kPairLanes];
     brute_force_block(block_, n_, result);
     for (int l = 0; l < n_; ++l)
-      out_[target_[l]] = result[l];
+      *target_[l] = result[l];
     n_ = 0;
   }
 
 private:
-  const TriangleSoA &a_, &b_;
-  TrianglePairDistance *out_;
   TrianglePairBlock block_;
-  int target_[kPairLanes];
+  TrianglePairDistance *target_[kPairLanes];
   int n_ = 0;
 };
 
@@ -93,20 +91,27 @@ void count_newton(const PenaltyBlockResult &r, int n, HybridCounters &c) {
 // Collects the pairs the first penalty run could not certify and runs them again with
 // HybridSettings::retry_iterations steps whenever kPairLanes are pending (full lanes, as
 // PendingBruteForce); what the second run cannot certify either goes to brute force. Each
-// lane's result depends on its pair only, so the grouping changes no bits.
+// lane's result depends on its pair only, so the grouping changes no bits. Pairs may come
+// from different body pairs; each lane keeps its own settings (tolerance, cutoff), and a pair
+// whose penalty settings or step counts differ from the pending ones flushes them first.
 class PendingRetry {
 public:
-  PendingRetry(const TriangleSoA &a, const TriangleSoA &b, const HybridSettings &s,
-               TrianglePairDistance *out, PendingBruteForce &brute_force, HybridCounters &c)
-      : a_(a), b_(b), s_(s), out_(out), brute_force_(brute_force), counters_(c) {}
+  PendingRetry(PendingBruteForce &brute_force, HybridCounters &c)
+      : brute_force_(brute_force), counters_(c) {}
   // `first`: the first run's result, lane `lane` of it, where the second run goes on.
-  void add(const TrianglePairIndex &pair, int out_index, const PenaltyBlockResult &first,
+  void add(const TriangleSoA &a, const TriangleSoA &b, const TrianglePairIndex &pair,
+           const HybridSettings &s, TrianglePairDistance *out, const PenaltyBlockResult &first,
            int lane) {
-    block_.set_lane(n_, a_, pair.a, b_, pair.b);
+    if (n_ > 0 && !same_run(*settings_[0], s))
+      flush();
+    block_.set_lane(n_, a, pair.a, b, pair.b);
     for (int k = 0; k < 4; ++k)
       start_[k][n_] = first.z[k][lane];
+    a_[n_] = &a;
+    b_[n_] = &b;
     pair_[n_] = pair;
-    target_[n_++] = out_index;
+    settings_[n_] = &s;
+    target_[n_++] = out;
     if (n_ == kPairLanes)
       flush();
   }
@@ -118,33 +123,104 @@ public:
       for (int k = 0; k < 4; ++k)
         start_[k][l] = start_[k][0];
     }
-    penalty_block_resume(s_.retry_iterations - s_.newton_iterations, block_, start_, s_.penalty,
-                         s_.tolerance, r_, n_);
+    const HybridSettings &s = *settings_[0];
+    penalty_block_resume(s.retry_iterations - s.newton_iterations, block_, start_, s.penalty,
+                         s.tolerance, r_, n_);
     counters_.retries += n_;
     for (int l = 0; l < n_; ++l) {
-      if (verdict(r_, l, s_) == Verdict::NeedsBruteForce) {
-        brute_force_.add(pair_[l], target_[l]);
+      if (verdict(r_, l, *settings_[l]) == Verdict::NeedsBruteForce) {
+        brute_force_.add(*a_[l], *b_[l], pair_[l], target_[l]);
         ++counters_.fallbacks;
       } else {
-        out_[target_[l]] = accepted_result(r_, l);
+        *target_[l] = accepted_result(r_, l);
       }
     }
     n_ = 0;
   }
 
 private:
-  const TriangleSoA &a_, &b_;
-  const HybridSettings &s_;
-  TrianglePairDistance *out_;
+  // Whether two pairs' second runs are the same computation (the lanes of one block).
+  static bool same_run(const HybridSettings &x, const HybridSettings &y) {
+    return x.newton_iterations == y.newton_iterations &&
+           x.retry_iterations == y.retry_iterations &&
+           x.penalty.penalty_weight == y.penalty.penalty_weight &&
+           x.penalty.regularisation == y.penalty.regularisation && x.tolerance == y.tolerance;
+  }
   PendingBruteForce &brute_force_;
   HybridCounters &counters_;
   TrianglePairBlock block_;
   PenaltyBlockResult r_;
   alignas(64) double start_[4][kPairLanes];
+  const TriangleSoA *a_[kPairLanes], *b_[kPairLanes];
   TrianglePairIndex pair_[kPairLanes];
-  int target_[kPairLanes];
+  const HybridSettings *settings_[kPairLanes];
+  TrianglePairDistance *target_[kPairLanes];
   int n_ = 0;
 };
+
+bool retries(const HybridSettings &s) {
+  return s.retry_iterations > s.newton_iterations &&
+         penalty_resume_supported(s.retry_iterations - s.newton_iterations);
+}
+
+// The first penalty run of the unbatched hybrid, on blocks filled across jobs (a body pair's
+// list is mostly shorter than a block); each lane's verdict with its own job's settings, and
+// what it cannot certify handed to the retry pool (or straight to brute force).
+class PendingFirst {
+public:
+  PendingFirst(PendingRetry &again, PendingBruteForce &brute_force, HybridCounters &c)
+      : again_(again), brute_force_(brute_force), counters_(c) {}
+  void add(const HybridJob &job, int k) {
+    if (n_ > 0 && !same_run(*job_[0], job))
+      flush();
+    block_.set_lane(n_, *job.a, job.pairs[k].a, *job.b, job.pairs[k].b);
+    job_[n_] = &job;
+    index_[n_++] = k;
+    if (n_ == kPairLanes)
+      flush();
+  }
+  void flush() {
+    if (n_ == 0)
+      return;
+    for (int l = n_; l < kPairLanes; ++l)
+      block_.copy_lane(0, l);
+    const HybridSettings &first = job_[0]->settings;
+    penalty_block(first.newton_iterations, block_, first.penalty, first.tolerance, r_, n_);
+    count_newton(r_, n_, counters_);
+    for (int l = 0; l < n_; ++l) {
+      const HybridJob &job = *job_[l];
+      const int k = index_[l];
+      if (verdict(r_, l, job.settings) != Verdict::NeedsBruteForce) {
+        job.out[k] = accepted_result(r_, l);
+      } else if (retries(job.settings)) {
+        again_.add(*job.a, *job.b, job.pairs[k], job.settings, job.out + k, r_, l);
+      } else {
+        brute_force_.add(*job.a, *job.b, job.pairs[k], job.out + k);
+        ++counters_.fallbacks;
+      }
+    }
+    n_ = 0;
+  }
+
+private:
+  // Whether two jobs' first runs are the same computation (the lanes of one block). The step
+  // tolerance only feeds the Newton histogram, which is per lane.
+  static bool same_run(const HybridJob &x, const HybridJob &y) {
+    return x.settings.newton_iterations == y.settings.newton_iterations &&
+           x.settings.penalty.penalty_weight == y.settings.penalty.penalty_weight &&
+           x.settings.penalty.regularisation == y.settings.penalty.regularisation &&
+           x.settings.tolerance == y.settings.tolerance;
+  }
+  PendingRetry &again_;
+  PendingBruteForce &brute_force_;
+  HybridCounters &counters_;
+  TrianglePairBlock block_;
+  PenaltyBlockResult r_;
+  const HybridJob *job_[kPairLanes];
+  int index_[kPairLanes];
+  int n_ = 0;
+};
+
 
 } // namespace
 
@@ -205,37 +281,18 @@ void penalty_distances(const TriangleSoA &a, const TriangleSoA &b, const Triangl
 void hybrid_distances(const TriangleSoA &a, const TriangleSoA &b, const TrianglePairIndex *pairs,
                       int count, const HybridSettings &settings, int batch_size,
                       TrianglePairDistance *out, HybridCounters &counters) {
+  if (batch_size <= 0) {
+    const HybridJob job{&a, &b, pairs, count, settings, out};
+    return hybrid_distances_jobs(&job, 1, counters);
+  }
   TrianglePairBlock block;
   PenaltyBlockResult r;
-  PendingBruteForce pending(a, b, out);
+  PendingBruteForce pending;
   const auto run_penalty = [&](int first, int n) {
     gather(a, b, pairs + first, n, block);
     penalty_block(settings.newton_iterations, block, settings.penalty, settings.tolerance, r, n);
     count_newton(r, n, counters);
   };
-  if (batch_size <= 0) {
-    const bool retry = settings.retry_iterations > settings.newton_iterations &&
-                       penalty_resume_supported(settings.retry_iterations -
-                                                settings.newton_iterations);
-    PendingRetry again(a, b, settings, out, pending, counters);
-    for (int first = 0; first < count; first += kPairLanes) {
-      const int n = std::min(kPairLanes, count - first);
-      run_penalty(first, n);
-      for (int l = 0; l < n; ++l) {
-        const Verdict v = verdict(r, l, settings);
-        if (v != Verdict::NeedsBruteForce) {
-          out[first + l] = accepted_result(r, l);
-        } else if (retry) {
-          again.add(pairs[first + l], first + l, r, l);
-        } else {
-          pending.add(pairs[first + l], first + l);
-          ++counters.fallbacks;
-        }
-      }
-    }
-    again.flush(); // before `pending` flushes (its destructor): it may add to it
-    return;
-  }
   for (int batch = 0; batch < count; batch += batch_size) {
     const int batch_end = std::min(count, batch + batch_size);
     bool batch_ok = true;
@@ -249,10 +306,21 @@ void hybrid_distances(const TriangleSoA &a, const TriangleSoA &b, const Triangle
     }
     if (!batch_ok) {
       for (int k = batch; k < batch_end; ++k)
-        pending.add(pairs[k], k);
+        pending.add(a, b, pairs[k], out + k);
       counters.fallbacks += batch_end - batch;
     }
   }
+}
+
+void hybrid_distances_jobs(const HybridJob *jobs, int num_jobs, HybridCounters &counters) {
+  PendingBruteForce pending;
+  PendingRetry again(pending, counters);
+  PendingFirst first(again, pending, counters);
+  for (int j = 0; j < num_jobs; ++j)
+    for (int k = 0; k < jobs[j].count; ++k)
+      first.add(jobs[j], k);
+  first.flush(); // before `again`, which it may add to, and `pending` (its destructor)
+  again.flush();
 }
 
 } // namespace tri

@@ -85,4 +85,21 @@ void hybrid_distances(const TriangleSoA &a, const TriangleSoA &b, const Triangle
                       int count, const HybridSettings &settings, int batch_size,
                       TrianglePairDistance *out, HybridCounters &counters);
 
+// The unbatched hybrid (batch_size <= 0) on the pair lists of many body pairs at once. Each
+// job's first penalty run goes block by block over its own list, as hybrid_distances does;
+// the pairs that run cannot certify are retried, and those the retry cannot certify are
+// brute-forced, in blocks filled across jobs. A settled pile's body pair has about 7
+// candidates of which 1 or 2 need a retry: per body pair, the retry and the brute force ran
+// on blocks with 6 or 7 of 8 lanes idle. Every lane's result depends on its own pair only
+// (penalty_distance.h, brute_force_block), so each job's results are bitwise those of
+// hybrid_distances on its list alone, however the jobs are grouped.
+struct HybridJob {
+  const TriangleSoA *a, *b;        // must outlive the call
+  const TrianglePairIndex *pairs;  // [0, count)
+  int count;
+  HybridSettings settings;
+  TrianglePairDistance *out;       // [0, count)
+};
+void hybrid_distances_jobs(const HybridJob *jobs, int num_jobs, HybridCounters &counters);
+
 } // namespace tri

@@ -7,6 +7,8 @@ namespace tri {
 void InteractionEngine::prepare(std::size_t n, int threads) {
   if (static_cast<int>(scratch_.size()) < threads)
     scratch_.resize(threads);
+  if (static_cast<int>(deferred_.size()) < threads)
+    deferred_.resize(threads);
   thread_stats_.assign(threads, ContactStats{});
   results_.assign(n, PairForceResult{});
   failed_task_ = n;
@@ -59,6 +61,8 @@ std::size_t InteractionEngine::bytes() const {
                   thread_stats_.capacity() * sizeof(ContactStats);
   for (const InteractionScratch &s : scratch_)
     b += sizeof(s) + s.bytes();
+  for (const std::vector<long> &d : deferred_)
+    b += sizeof(d) + d.capacity() * sizeof(long);
   return b;
 }
 

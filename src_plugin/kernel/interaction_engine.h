@@ -11,11 +11,19 @@
 // std::terminate); the engine keeps the message of the lowest failing task, and the host
 // reports it through its own error path after the loop, naming the bodies of that task.
 // Memory: scratch grows to the largest task seen and is kept (bytes() counts it).
+// Groups: tasks run in groups of kGroupTasks consecutive ones, on one thread each. Within a
+// group, a task served by kept candidates defers its distance kernel (InteractionScratch::
+// defer); the group's kernels run together (hybrid_distances_jobs: retries and fallbacks fill
+// the vector lanes across body pairs), then those tasks are evaluated a second time and go on
+// from their results. The results are bitwise those of evaluating each task alone. `evaluate`
+// must therefore be callable twice for a task, giving body_interaction the same bodies (the
+// hosts' callables read the step's data and write only through body_interaction).
 #pragma once
 
 #include "body_interaction.h"
 #include "interaction_tally.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <exception>
 #include <string>
@@ -33,6 +41,10 @@ public:
   // using `scratch` (this thread's) and adding the distance kernel's counters to `stats`.
   // threads <= 1: the calling thread alone, no parallel region.
   template <class Evaluate> void run(std::size_t n, int threads, Evaluate &&evaluate);
+
+  // Tasks per group: enough deferred kernels to fill the retry and fallback lanes, few enough
+  // that a group's triangles are still in cache when its tasks go on.
+  static constexpr long kGroupTasks = 16;
 
   std::size_t size() const { return results_.size(); }
   const PairForceResult &result(std::size_t k) const { return results_[k]; }
@@ -61,6 +73,7 @@ private:
   };
   std::vector<InteractionScratch> scratch_; // one per thread
   std::vector<ContactStats> thread_stats_;  // one per thread
+  std::vector<std::vector<long>> deferred_;  // per thread: the group's deferred tasks, by job
   std::vector<PairForceResult> results_;
   std::vector<Contribution> contributions_;
   InteractionTally tally_;
@@ -86,17 +99,46 @@ template <class Evaluate> void InteractionEngine::run(std::size_t n, int threads
       record_failure(static_cast<std::size_t>(k), "unknown exception");
     }
   };
+  auto group = [&](long g, int thread) {
+    InteractionScratch &scratch = scratch_[thread];
+    const long first = g * kGroupTasks, last = std::min(count, first + kGroupTasks);
+    scratch.clear_jobs();
+    deferred_[thread].clear();
+    scratch.defer = true;
+    for (long k = first; k < last; ++k) {
+      const std::size_t queued = scratch.jobs.size();
+      one(k, thread);
+      if (scratch.jobs.size() != queued)
+        deferred_[thread].push_back(k);
+    }
+    scratch.defer = false;
+    if (scratch.jobs.empty())
+      return;
+    try {
+      scratch.run_jobs(thread_stats_[thread]);
+    } catch (const std::exception &e) {
+      for (long k : deferred_[thread])
+        record_failure(static_cast<std::size_t>(k), e.what());
+      return;
+    }
+    for (std::size_t j = 0; j < deferred_[thread].size(); ++j) {
+      scratch.resume_job = static_cast<int>(j);
+      one(deferred_[thread][j], thread);
+    }
+    scratch.resume_job = -1;
+  };
+  const long groups = (count + kGroupTasks - 1) / kGroupTasks;
   if (threads == 1) {
-    for (long k = 0; k < count; ++k)
-      one(k, 0);
+    for (long g = 0; g < groups; ++g)
+      group(g, 0);
   } else {
-#pragma omp parallel for schedule(dynamic, 4) num_threads(threads)
-    for (long k = 0; k < count; ++k) {
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+    for (long g = 0; g < groups; ++g) {
       int thread = 0;
 #ifdef _OPENMP
       thread = omp_get_thread_num();
 #endif
-      one(k, thread);
+      group(g, thread);
     }
   }
   finish();

@@ -126,6 +126,16 @@ void run_kernel(const TriangleSoA &a, const TriangleSoA &b, const ContactOptions
   }
 }
 
+HybridSettings hybrid_settings(const ContactOptions &opt, double eps_a, double eps_b) {
+  HybridSettings hs;
+  hs.newton_iterations = opt.newton_iterations;
+  hs.retry_iterations = opt.retry_iterations;
+  hs.penalty = opt.penalty;
+  hs.tolerance = opt.tolerance_ratio * std::min(eps_a, eps_b);
+  hs.cutoff = eps_a + eps_b;
+  return hs;
+}
+
 void check_options(const ContactOptions &opt) {
   if (!penalty_iterations_supported(opt.newton_iterations))
     throw std::invalid_argument("find_triangle_contacts: unsupported newton_iterations");
@@ -153,13 +163,7 @@ void contacts_among_candidates(const TriangleSoA &a, double eps_a, const Triangl
   stats.triangle_pairs_culled +=
       static_cast<long long>(a.num_triangles()) * b.num_triangles() - count;
   ws.results.resize(static_cast<std::size_t>(count));
-
-  HybridSettings hs;
-  hs.newton_iterations = opt.newton_iterations;
-  hs.retry_iterations = opt.retry_iterations;
-  hs.penalty = opt.penalty;
-  hs.tolerance = opt.tolerance_ratio * std::min(eps_a, eps_b);
-  hs.cutoff = cutoff;
+  const HybridSettings hs = hybrid_settings(opt, eps_a, eps_b);
 
   TrianglePairDistance *results = ws.results.data();
   HybridCounters counters;
@@ -206,7 +210,26 @@ void contacts_among_candidates(const TriangleSoA &a, double eps_a, const Triangl
   }
   }
   static_cast<HybridCounters &>(stats) += counters;
+  contacts_from_results(pairs, results, count, cutoff, out, stats);
+}
 
+bool can_queue_candidates(const ContactOptions &opt) {
+  return opt.kernel == DistanceKernel::Hybrid && opt.parallel == ContactParallelism::None;
+}
+
+HybridJob queue_candidates(const TriangleSoA &a, double eps_a, const TriangleSoA &b, double eps_b,
+                           const ContactOptions &opt, const TrianglePairIndex *pairs, int count,
+                           ContactStats &stats) {
+  check_options(opt);
+  stats.triangle_pairs_tested += count;
+  stats.triangle_pairs_culled +=
+      static_cast<long long>(a.num_triangles()) * b.num_triangles() - count;
+  return HybridJob{&a, &b, pairs, count, hybrid_settings(opt, eps_a, eps_b), nullptr};
+}
+
+void contacts_from_results(const TrianglePairIndex *pairs, const TrianglePairDistance *results,
+                           int count, double cutoff, std::vector<TriangleContact> &out,
+                           ContactStats &stats) {
   for (int k = 0; k < count; ++k) {
     const TrianglePairDistance &r = results[k];
     if (!(r.distance < cutoff))

@@ -135,6 +135,20 @@ void contacts_among_candidates(const TriangleSoA &a, double eps_a, const Triangl
                                std::vector<TriangleContact> &out, ContactStats &stats,
                                ContactWorkspace &ws);
 
+// contacts_among_candidates in two halves, for callers that run the kernels of many body pairs
+// together (hybrid_distances_jobs, interaction_engine.h): queue_candidates counts the pairs in
+// `stats` and returns the hybrid job (its `out` left for the caller to point at `count`
+// results); after the run, contacts_from_results appends the pairs closer than eps_a + eps_b,
+// as contacts_among_candidates does. Only for the unbatched hybrid without threads inside
+// the pair (can_queue_candidates); the contacts are bitwise contacts_among_candidates'.
+bool can_queue_candidates(const ContactOptions &opt);
+HybridJob queue_candidates(const TriangleSoA &a, double eps_a, const TriangleSoA &b, double eps_b,
+                           const ContactOptions &opt, const TrianglePairIndex *pairs, int count,
+                           ContactStats &stats);
+void contacts_from_results(const TrianglePairIndex *pairs, const TrianglePairDistance *results,
+                           int count, double cutoff, std::vector<TriangleContact> &out,
+                           ContactStats &stats);
+
 // The same with a workspace of its own (allocates on every call: tests, tools, one-off uses).
 void find_triangle_contacts(const TriangleSoA &a, double eps_a, const TriangleSoA &b, double eps_b,
                             const ContactOptions &opt, std::vector<TriangleContact> &out,

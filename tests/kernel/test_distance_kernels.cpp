@@ -134,6 +134,56 @@ TEST_P(HybridAtScale, RetryKeepsBruteForcesAnswersWithFewerFallbacks) {
   EXPECT_EQ(with.penalty_pairs, without.penalty_pairs); // retries are not in the histogram
 }
 
+// Many body pairs' lists at once (hybrid_distances_jobs, what the interaction engine runs):
+// short lists of 1 to 11 pairs, with settings that differ from job to job (tolerance, cutoff,
+// iteration counts, no retry), so that blocks of the first run, of the retry and of brute
+// force mix jobs and flush where the settings change. Every job's results are bitwise
+// hybrid_distances' on its list alone, and the counters sum to theirs.
+TEST(Hybrid, JobsRunTogetherGiveEachJobsOwnResults) {
+  const PairSet s = make_set(1e-3, 47);
+  const int n = static_cast<int>(s.pairs.size());
+  HybridSettings base;
+  base.tolerance = 1e-10;
+  base.cutoff = 0.0437e-3;
+  base.retry_iterations = 8;
+  std::vector<HybridJob> jobs;
+  std::vector<TrianglePairDistance> together(n), alone(n);
+  HybridCounters sum_alone;
+  for (int first = 0, j = 0; first < n; ++j) {
+    const int count = std::min(n - first, 1 + (j * 7) % 11);
+    HybridSettings hs = base;
+    if (j % 5 == 1)
+      hs.tolerance = 3e-10;
+    if (j % 7 == 2)
+      hs.cutoff = 0.02e-3;
+    if (j % 11 == 3)
+      hs.retry_iterations = 0;
+    if (j % 13 == 4)
+      hs.newton_iterations = 8, hs.retry_iterations = 16;
+    jobs.push_back({&s.a, &s.b, s.pairs.data() + first, count, hs, together.data() + first});
+    hybrid_distances(s.a, s.b, s.pairs.data() + first, count, hs, 0, alone.data() + first,
+                     sum_alone);
+    first += count;
+  }
+  HybridCounters sum_together;
+  hybrid_distances_jobs(jobs.data(), static_cast<int>(jobs.size()), sum_together);
+  for (int k = 0; k < n; ++k) {
+    ASSERT_EQ(together[k].distance, alone[k].distance) << s.names[k];
+    ASSERT_EQ(together[k].lower_bound, alone[k].lower_bound) << s.names[k];
+    ASSERT_EQ(together[k].point_a, alone[k].point_a) << s.names[k];
+    ASSERT_EQ(together[k].point_b, alone[k].point_b) << s.names[k];
+    ASSERT_EQ(together[k].normal, alone[k].normal) << s.names[k];
+    ASSERT_EQ(together[k].intersecting, alone[k].intersecting) << s.names[k];
+  }
+  EXPECT_GT(sum_together.retries, 0);
+  EXPECT_GT(sum_together.fallbacks, 0);
+  EXPECT_EQ(sum_together.penalty_pairs, sum_alone.penalty_pairs);
+  EXPECT_EQ(sum_together.retries, sum_alone.retries);
+  EXPECT_EQ(sum_together.fallbacks, sum_alone.fallbacks);
+  for (int k = 0; k <= kMaxPenaltyIterations; ++k)
+    EXPECT_EQ(sum_together.newton_histogram[k], sum_alone.newton_histogram[k]);
+}
+
 TEST(Penalty, AloneIsCloseButUnchecked) {
   const PairSet s = make_set(1.0, 44);
   const int n = static_cast<int>(s.pairs.size());
