@@ -12,6 +12,9 @@ namespace {
 using Eigen::Vector3d;
 using Cell = std::array<std::int64_t, 3>;
 
+// Up to this many points every pair is tested: n^2 / 2 distances are cheaper than a sort.
+constexpr int kAllPairsLinkLimit = 12;
+
 // Union by smaller index: every root is its component's smallest index.
 void unite(std::vector<int> &parent, int i, int j) {
   i = link_root(parent, i);
@@ -116,6 +119,16 @@ void link_points(const std::vector<Vector3d> &points, double link, std::vector<i
   std::iota(parent.begin(), parent.end(), 0);
   if (n < 2)
     return;
+  if (n <= kAllPairsLinkLimit) {
+    // A contact of a few triangle pairs (most of them): every pair, no sort. The components,
+    // and each root (its smallest index), do not depend on the order of the unions.
+    const double link2 = link * link;
+    for (int i = 0; i < n; ++i)
+      for (int j = i + 1; j < n; ++j)
+        if ((points[i] - points[j]).squaredNorm() <= link2)
+          unite(parent, i, j);
+    return;
+  }
   Vector3d lo = Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
   for (const Vector3d &q : points) {
     lo = lo.cwiseMin(q);
