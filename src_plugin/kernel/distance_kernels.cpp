@@ -312,13 +312,48 @@ void hybrid_distances(const TriangleSoA &a, const TriangleSoA &b, const Triangle
   }
 }
 
+namespace {
+
+// The jobs' pair lists and triangles are scattered over the heap (each body pair's kept list,
+// each particle's world-frame triangles) and mostly out of cache: the gather of a block waited
+// on its loads. While job j runs, job j + 1's triangles and job j + 2's list are fetched.
+void prefetch_list(const HybridJob &job) {
+  const char *p = reinterpret_cast<const char *>(job.pairs);
+  const std::size_t bytes = static_cast<std::size_t>(job.count) * sizeof(TrianglePairIndex);
+  for (std::size_t offset = 0; offset < bytes; offset += 64)
+    __builtin_prefetch(p + offset);
+}
+void prefetch_triangles(const HybridJob &job) {
+  for (int k = 0; k < job.count; ++k) {
+    const std::size_t ia = 3 * static_cast<std::size_t>(job.pairs[k].a);
+    const std::size_t ib = 3 * static_cast<std::size_t>(job.pairs[k].b);
+    __builtin_prefetch(job.a->x.data() + ia);
+    __builtin_prefetch(job.a->y.data() + ia);
+    __builtin_prefetch(job.a->z.data() + ia);
+    __builtin_prefetch(job.b->x.data() + ib);
+    __builtin_prefetch(job.b->y.data() + ib);
+    __builtin_prefetch(job.b->z.data() + ib);
+  }
+}
+
+} // namespace
+
 void hybrid_distances_jobs(const HybridJob *jobs, int num_jobs, HybridCounters &counters) {
   PendingBruteForce pending;
   PendingRetry again(pending, counters);
   PendingFirst first(again, pending, counters);
-  for (int j = 0; j < num_jobs; ++j)
+  for (int j = 0; j < std::min(num_jobs, 2); ++j)
+    prefetch_list(jobs[j]);
+  if (num_jobs > 0)
+    prefetch_triangles(jobs[0]);
+  for (int j = 0; j < num_jobs; ++j) {
+    if (j + 2 < num_jobs)
+      prefetch_list(jobs[j + 2]);
+    if (j + 1 < num_jobs)
+      prefetch_triangles(jobs[j + 1]);
     for (int k = 0; k < jobs[j].count; ++k)
       first.add(jobs[j], k);
+  }
   first.flush(); // before `again`, which it may add to, and `pending` (its destructor)
   again.flush();
 }
