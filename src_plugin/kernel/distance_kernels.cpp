@@ -27,6 +27,26 @@ void gather(const TriangleSoA &a, const TriangleSoA &b, const TrianglePairIndex 
     block.copy_lane(0, l);
 }
 
+// One block's lanes, filled pair by pair by the pools below, each of which runs its block
+// once all kPairLanes are taken (or when flushed), the unused lanes padded with lane 0.
+struct LaneFill {
+  TrianglePairBlock block;
+  int n = 0;
+  // Takes the next lane; true when the block is full.
+  bool take(const TriangleSoA &a, int ta, const TriangleSoA &b, int tb) {
+    block.set_lane(n++, a, ta, b, tb);
+    return n == kPairLanes;
+  }
+  // Pads the unused lanes and empties the fill for the next block; returns the lanes used.
+  int drain() {
+    for (int l = n; l < kPairLanes; ++l)
+      block.copy_lane(0, l);
+    const int used = n;
+    n = 0;
+    return used;
+  }
+};
+
 // Collects pairs for brute force and runs brute_force_block whenever kPairLanes are pending,
 // so that a low fallback rate still fills the vector lanes. Pairs may come from different
 // triangle lists (body pairs).
@@ -35,27 +55,23 @@ public:
   ~PendingBruteForce() { flush(); }
   void add(const TriangleSoA &a, const TriangleSoA &b, const TrianglePairIndex &pair,
            TrianglePairDistance *out) {
-    block_.set_lane(n_, a, pair.a, b, pair.b);
-    target_[n_++] = out;
-    if (n_ == kPairLanes)
+    target_[fill_.n] = out;
+    if (fill_.take(a, pair.a, b, pair.b))
       flush();
   }
   void flush() {
-    if (n_ == 0)
+    const int n = fill_.drain();
+    if (n == 0)
       return;
-    for (int l = n_; l < kPairLanes; ++l)
-      block_.copy_lane(0, l);
     TrianglePairDistance result[kPairLanes];
-    brute_force_block(block_, n_, result);
-    for (int l = 0; l < n_; ++l)
+    brute_force_block(fill_.block, n, result);
+    for (int l = 0; l < n; ++l)
       *target_[l] = result[l];
-    n_ = 0;
   }
 
 private:
-  TrianglePairBlock block_;
+  LaneFill fill_;
   TrianglePairDistance *target_[kPairLanes];
-  int n_ = 0;
 };
 
 TrianglePairDistance accepted_result(const PenaltyBlockResult &r, int l) {
@@ -102,32 +118,31 @@ public:
   void add(const TriangleSoA &a, const TriangleSoA &b, const TrianglePairIndex &pair,
            const HybridSettings &s, TrianglePairDistance *out, const PenaltyBlockResult &first,
            int lane) {
-    if (n_ > 0 && !same_run(*settings_[0], s))
+    if (fill_.n > 0 && !same_run(*settings_[0], s))
       flush();
-    block_.set_lane(n_, a, pair.a, b, pair.b);
+    const int l = fill_.n;
     for (int k = 0; k < 4; ++k)
-      start_[k][n_] = first.z[k][lane];
-    a_[n_] = &a;
-    b_[n_] = &b;
-    pair_[n_] = pair;
-    settings_[n_] = &s;
-    target_[n_++] = out;
-    if (n_ == kPairLanes)
+      start_[k][l] = first.z[k][lane];
+    a_[l] = &a;
+    b_[l] = &b;
+    pair_[l] = pair;
+    settings_[l] = &s;
+    target_[l] = out;
+    if (fill_.take(a, pair.a, b, pair.b))
       flush();
   }
   void flush() {
-    if (n_ == 0)
+    const int n = fill_.drain();
+    if (n == 0)
       return;
-    for (int l = n_; l < kPairLanes; ++l) {
-      block_.copy_lane(0, l);
+    for (int l = n; l < kPairLanes; ++l)
       for (int k = 0; k < 4; ++k)
         start_[k][l] = start_[k][0];
-    }
     const HybridSettings &s = *settings_[0];
-    penalty_block_resume(s.retry_iterations - s.newton_iterations, block_, start_, s.penalty,
-                         s.tolerance, r_, n_);
-    counters_.retries += n_;
-    for (int l = 0; l < n_; ++l) {
+    penalty_block_resume(s.retry_iterations - s.newton_iterations, fill_.block, start_, s.penalty,
+                         s.tolerance, r_, n);
+    counters_.retries += n;
+    for (int l = 0; l < n; ++l) {
       if (verdict(r_, l, *settings_[l]) == Verdict::NeedsBruteForce) {
         brute_force_.add(*a_[l], *b_[l], pair_[l], target_[l]);
         ++counters_.fallbacks;
@@ -135,7 +150,6 @@ public:
         *target_[l] = accepted_result(r_, l);
       }
     }
-    n_ = 0;
   }
 
 private:
@@ -148,14 +162,13 @@ private:
   }
   PendingBruteForce &brute_force_;
   HybridCounters &counters_;
-  TrianglePairBlock block_;
+  LaneFill fill_;
   PenaltyBlockResult r_;
   alignas(64) double start_[4][kPairLanes];
   const TriangleSoA *a_[kPairLanes], *b_[kPairLanes];
   TrianglePairIndex pair_[kPairLanes];
   const HybridSettings *settings_[kPairLanes];
   TrianglePairDistance *target_[kPairLanes];
-  int n_ = 0;
 };
 
 bool retries(const HybridSettings &s) {
@@ -171,23 +184,21 @@ public:
   PendingFirst(PendingRetry &again, PendingBruteForce &brute_force, HybridCounters &c)
       : again_(again), brute_force_(brute_force), counters_(c) {}
   void add(const HybridJob &job, int k) {
-    if (n_ > 0 && !same_run(*job_[0], job))
+    if (fill_.n > 0 && !same_run(*job_[0], job))
       flush();
-    block_.set_lane(n_, *job.a, job.pairs[k].a, *job.b, job.pairs[k].b);
-    job_[n_] = &job;
-    index_[n_++] = k;
-    if (n_ == kPairLanes)
+    job_[fill_.n] = &job;
+    index_[fill_.n] = k;
+    if (fill_.take(*job.a, job.pairs[k].a, *job.b, job.pairs[k].b))
       flush();
   }
   void flush() {
-    if (n_ == 0)
+    const int n = fill_.drain();
+    if (n == 0)
       return;
-    for (int l = n_; l < kPairLanes; ++l)
-      block_.copy_lane(0, l);
     const HybridSettings &first = job_[0]->settings;
-    penalty_block(first.newton_iterations, block_, first.penalty, first.tolerance, r_, n_);
-    count_newton(r_, n_, counters_);
-    for (int l = 0; l < n_; ++l) {
+    penalty_block(first.newton_iterations, fill_.block, first.penalty, first.tolerance, r_, n);
+    count_newton(r_, n, counters_);
+    for (int l = 0; l < n; ++l) {
       const HybridJob &job = *job_[l];
       const int k = index_[l];
       if (verdict(r_, l, job.settings) != Verdict::NeedsBruteForce) {
@@ -199,7 +210,6 @@ public:
         ++counters_.fallbacks;
       }
     }
-    n_ = 0;
   }
 
 private:
@@ -214,11 +224,10 @@ private:
   PendingRetry &again_;
   PendingBruteForce &brute_force_;
   HybridCounters &counters_;
-  TrianglePairBlock block_;
+  LaneFill fill_;
   PenaltyBlockResult r_;
   const HybridJob *job_[kPairLanes];
   int index_[kPairLanes];
-  int n_ = 0;
 };
 
 
