@@ -28,7 +28,9 @@ struct InteractionSettings {
 };
 
 // Per-thread scratch, owned by the caller, so the force loop allocates nothing once warmed up.
-struct InteractionScratch {
+// Aligned to cache lines: the engine keeps one per thread side by side, and every task grows
+// and shrinks its vectors (their pointers are in the struct).
+struct alignas(64) InteractionScratch {
   ContactWorkspace distance;
   std::vector<TriangleContact> triangle_contacts;
   std::vector<ContactPoint> points;

@@ -9,7 +9,7 @@ void InteractionEngine::prepare(std::size_t n, int threads) {
     scratch_.resize(threads);
   if (static_cast<int>(deferred_.size()) < threads)
     deferred_.resize(threads);
-  thread_stats_.assign(threads, ContactStats{});
+  thread_stats_.assign(threads, ThreadStats{});
   results_.assign(n, PairForceResult{});
   failed_task_ = n;
   failure_.clear();
@@ -58,7 +58,7 @@ void InteractionEngine::apply(double **f, double **torque) {
 std::size_t InteractionEngine::bytes() const {
   std::size_t b = results_.capacity() * sizeof(PairForceResult) +
                   contributions_.capacity() * sizeof(Contribution) +
-                  thread_stats_.capacity() * sizeof(ContactStats);
+                  thread_stats_.capacity() * sizeof(ThreadStats);
   for (const InteractionScratch &s : scratch_)
     b += sizeof(s) + s.bytes();
   for (const std::vector<long> &d : deferred_)

@@ -72,7 +72,11 @@ private:
     double force[3], torque[3];
   };
   std::vector<InteractionScratch> scratch_; // one per thread
-  std::vector<ContactStats> thread_stats_;  // one per thread
+  // One per thread, each on cache lines of its own: every task adds to its thread's counters,
+  // and two threads writing one line (the end of one entry, the start of the next) would pass
+  // it back and forth.
+  struct alignas(64) ThreadStats : ContactStats {};
+  std::vector<ThreadStats> thread_stats_;
   std::vector<std::vector<long>> deferred_;  // per thread: the group's deferred tasks, by job
   std::vector<PairForceResult> results_;
   std::vector<Contribution> contributions_;
