@@ -42,23 +42,44 @@ void InteractionEngine::contribute(int atom, long long partner, const Eigen::Vec
 }
 
 void InteractionEngine::apply(double **f, double **torque) {
-  // Stable: two images of one partner (a periodic box smaller than a particle's reach) keep
-  // the order they were contributed in.
-  std::stable_sort(contributions_.begin(), contributions_.end(),
-                   [](const Contribution &x, const Contribution &y) {
-                     return x.atom != y.atom ? x.atom < y.atom : x.partner < y.partner;
-                   });
+  // The order of a stable sort by (atom, partner): two images of one partner (a periodic box
+  // smaller than a particle's reach) keep the order they were contributed in. A counting sort
+  // by atom (stable), then each atom's few contributions by partner (insertion sort, stable):
+  // a comparison sort of the whole list was 6 % of a settled pile's step.
+  int atoms = 0;
   for (const Contribution &c : contributions_)
-    for (int d = 0; d < 3; ++d) {
-      f[c.atom][d] += c.force[d];
-      torque[c.atom][d] += c.torque[d];
-    }
+    atoms = std::max(atoms, c.atom + 1);
+  first_of_atom_.assign(static_cast<std::size_t>(atoms) + 1, 0);
+  for (const Contribution &c : contributions_)
+    ++first_of_atom_[static_cast<std::size_t>(c.atom) + 1];
+  for (int a = 0; a < atoms; ++a)
+    first_of_atom_[a + 1] += first_of_atom_[a];
+  sorted_.resize(contributions_.size());
+  {
+    std::vector<std::size_t> &next = next_of_atom_;
+    next.assign(first_of_atom_.begin(), first_of_atom_.end() - 1);
+    for (const Contribution &c : contributions_)
+      sorted_[next[c.atom]++] = c;
+  }
+  for (int a = 0; a < atoms; ++a) {
+    const std::size_t begin = first_of_atom_[a], end = first_of_atom_[a + 1];
+    for (std::size_t i = begin + 1; i < end; ++i)
+      for (std::size_t j = i; j > begin && sorted_[j].partner < sorted_[j - 1].partner; --j)
+        std::swap(sorted_[j], sorted_[j - 1]);
+    for (std::size_t i = begin; i < end; ++i)
+      for (int d = 0; d < 3; ++d) {
+        f[a][d] += sorted_[i].force[d];
+        torque[a][d] += sorted_[i].torque[d];
+      }
+  }
 }
 
 std::size_t InteractionEngine::bytes() const {
   std::size_t b = results_.capacity() * sizeof(PairForceResult) +
                   contributions_.capacity() * sizeof(Contribution) +
-                  thread_stats_.capacity() * sizeof(ThreadStats);
+                  thread_stats_.capacity() * sizeof(ThreadStats) +
+                  sorted_.capacity() * sizeof(Contribution) +
+                  (first_of_atom_.capacity() + next_of_atom_.capacity()) * sizeof(std::size_t);
   for (const InteractionScratch &s : scratch_)
     b += sizeof(s) + s.bytes();
   for (const std::vector<long> &d : deferred_)

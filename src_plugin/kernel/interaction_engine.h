@@ -80,6 +80,8 @@ private:
   std::vector<std::vector<long>> deferred_;  // per thread: the group's deferred tasks, by job
   std::vector<PairForceResult> results_;
   std::vector<Contribution> contributions_;
+  std::vector<Contribution> sorted_;                       // apply(): by (atom, partner)
+  std::vector<std::size_t> first_of_atom_, next_of_atom_; // apply(): the counting sort
   InteractionTally tally_;
   std::size_t failed_task_ = 0;
   std::string failure_;
