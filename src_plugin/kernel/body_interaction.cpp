@@ -49,6 +49,8 @@ std::size_t InteractionScratch::bytes() const {
          ints * sizeof(int) + wall_apart.capacity() +
          4 * wall_planes.n_x.capacity() * sizeof(double) + jobs.capacity() * sizeof(HybridJob) +
          job_offsets.capacity() * sizeof(std::size_t) +
+         job_origins.capacity() * sizeof(JobOrigin) +
+         job_pairs.capacity() * sizeof(TrianglePairIndex) +
          job_results.capacity() * sizeof(TrianglePairDistance);
 }
 
@@ -60,8 +62,11 @@ void InteractionScratch::run_jobs(HybridCounters &stats) {
     total += static_cast<std::size_t>(jobs[j].count);
   }
   job_results.resize(total);
-  for (std::size_t j = 0; j < jobs.size(); ++j)
+  for (std::size_t j = 0; j < jobs.size(); ++j) {
     jobs[j].out = job_results.data() + job_offsets[j];
+    if (job_origins[j].pairs_offset >= 0) // job_pairs has stopped growing: pointers now
+      jobs[j].pairs = job_pairs.data() + job_origins[j].pairs_offset;
+  }
   hybrid_distances_jobs(jobs.data(), static_cast<int>(jobs.size()), stats);
 }
 
@@ -152,15 +157,19 @@ PairForceResult after_kernel(const Body &a, const Body &b, const InteractionSett
 PairForceResult resume_after_kernel(const Body &a, const Body &b, const InteractionSettings &s,
                                     double dt, double *history, InteractionScratch &scratch,
                                     ContactStats &stats, SeparationCache cache) {
-  const HybridJob &job = scratch.jobs[static_cast<std::size_t>(scratch.resume_job)];
-  const TrianglePairDistance *results =
-      scratch.job_results.data() + scratch.job_offsets[static_cast<std::size_t>(scratch.resume_job)];
+  const std::size_t j = static_cast<std::size_t>(scratch.resume_job);
+  const HybridJob &job = scratch.jobs[j];
+  const InteractionScratch::JobOrigin &origin = scratch.job_origins[j];
+  const TrianglePairDistance *results = scratch.job_results.data() + scratch.job_offsets[j];
   ContactWorkspace &ws = scratch.distance; // as contacts_among_candidates leaves it
   ws.results.assign(results, results + job.count);
   ws.tested = job.count;
+  const double cutoff = a.epsilon + b.epsilon;
   scratch.triangle_contacts.clear();
-  contacts_from_results(job.pairs, results, job.count, a.epsilon + b.epsilon,
-                        scratch.triangle_contacts, stats);
+  contacts_from_results(job.pairs, results, job.count, cutoff, scratch.triangle_contacts, stats);
+  if (origin.keep)
+    cache.candidates->keep(&a.pose, *a.triangles, b.is_wall() ? nullptr : &b.pose, *b.triangles,
+                           cutoff, origin.reach, job.pairs, job.count, results);
   return after_kernel(a, b, s, dt, history, scratch, cache);
 }
 
@@ -204,6 +213,7 @@ PairForceResult body_interaction(const Body &a, const Body &b, const Interaction
       scratch.jobs.push_back(queue_candidates(*a.triangles, a.epsilon, *b.triangles, b.epsilon,
                                               s.distance, cache.candidates->pairs(),
                                               cache.candidates->count(), stats));
+      scratch.job_origins.push_back({});
       return PairForceResult{};
     }
     contacts_among_candidates(*a.triangles, a.epsilon, *b.triangles, b.epsilon, s.distance,
@@ -224,6 +234,16 @@ PairForceResult body_interaction(const Body &a, const Body &b, const Interaction
     }
     const int count =
         find_candidate_pairs(*a.triangles, *b.triangles, margin, s.distance, scratch.distance, skip);
+    if (count > 0 && scratch.defer && can_queue_candidates(s.distance)) {
+      // The search's list is overwritten by the next task's: a copy, pointed at in run_jobs.
+      const TrianglePairIndex *found = scratch.distance.pairs.data();
+      scratch.job_origins.push_back(
+          {static_cast<std::ptrdiff_t>(scratch.job_pairs.size()), keep, reach});
+      scratch.job_pairs.insert(scratch.job_pairs.end(), found, found + count);
+      scratch.jobs.push_back(queue_candidates(*a.triangles, a.epsilon, *b.triangles, b.epsilon,
+                                              s.distance, nullptr, count, stats));
+      return PairForceResult{};
+    }
     contacts_among_candidates(*a.triangles, a.epsilon, *b.triangles, b.epsilon, s.distance,
                               scratch.distance.pairs.data(), count, scratch.triangle_contacts,
                               stats, scratch.distance);

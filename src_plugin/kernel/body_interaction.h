@@ -42,19 +42,31 @@ struct alignas(64) InteractionScratch {
   std::vector<std::uint8_t> wall_apart;
   TrianglePlanes wall_planes;
   // Kernel work deferred by the engine (interaction_engine.h). While `defer` is set, a body
-  // pair served by its kept candidates queues its hybrid job (queue_candidates) and returns
-  // at once with an empty result; the engine runs the queued jobs together (their retries and
-  // fallbacks fill the vector lanes across body pairs) and calls again with `resume_job` set
-  // to the pair's job, which goes on from the results exactly where the direct call would.
+  // pair that reaches the distance kernel (its kept candidates, or a search's) queues its
+  // hybrid job (queue_candidates) and returns at once with an empty result; the engine runs
+  // the queued jobs together (their first runs, retries and fallbacks fill the vector lanes
+  // across body pairs) and calls again with `resume_job` set to the pair's job, which goes on
+  // from the results exactly where the direct call would.
   bool defer = false;
   int resume_job = -1;
   std::vector<HybridJob> jobs;
+  // Per job: where a search's candidates were copied (job_pairs; -1 for a kept list, which
+  // stays where it is), and whether the search keeps them, with what reach.
+  struct JobOrigin {
+    std::ptrdiff_t pairs_offset = -1;
+    bool keep = false;
+    double reach = 0.0;
+  };
+  std::vector<JobOrigin> job_origins;
+  std::vector<TrianglePairIndex> job_pairs;
   std::vector<std::size_t> job_offsets; // job j's results: job_results[job_offsets[j]...]
   std::vector<TrianglePairDistance> job_results;
   // Runs the queued jobs (counters into `stats`); the results stay until the next clear_jobs.
   void run_jobs(HybridCounters &stats);
   void clear_jobs() {
     jobs.clear();
+    job_origins.clear();
+    job_pairs.clear();
     job_offsets.clear();
   }
 

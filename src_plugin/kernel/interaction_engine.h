@@ -12,8 +12,8 @@
 // reports it through its own error path after the loop, naming the bodies of that task.
 // Memory: scratch grows to the largest task seen and is kept (bytes() counts it).
 // Groups: tasks run in groups of kGroupTasks consecutive ones, on one thread each. Within a
-// group, a task served by kept candidates defers its distance kernel (InteractionScratch::
-// defer); the group's kernels run together (hybrid_distances_jobs: retries and fallbacks fill
+// group, a task that reaches the distance kernel (kept candidates or a search's) defers it
+// (InteractionScratch::defer); the group's kernels run together (hybrid_distances_jobs: retries and fallbacks fill
 // the vector lanes across body pairs), then those tasks are evaluated a second time and go on
 // from their results. The results are bitwise those of evaluating each task alone. `evaluate`
 // must therefore be callable twice for a task, giving body_interaction the same bodies (the
