@@ -90,7 +90,7 @@ void hybrid_distances(const TriangleSoA &a, const TriangleSoA &b, const Triangle
 // the pairs that run cannot certify are retried, and those the retry cannot certify are
 // brute-forced, in blocks filled across jobs. A settled pile's body pair has about 7
 // candidates of which 1 or 2 need a retry: per body pair, the retry and the brute force ran
-// on blocks with 6 or 7 of 8 lanes idle. Every lane's result depends on its own pair only
+// on blocks with most of their lanes idle. Every lane's result depends on its own pair only
 // (penalty_distance.h, brute_force_block), so each job's results are bitwise those of
 // hybrid_distances on its list alone, however the jobs are grouped.
 struct HybridJob {
