@@ -6,10 +6,14 @@
 #include "body_interaction.h"
 #include "random_rock.h"
 #include "shape.h"
+#include "test_particles.h"
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <cstdint>
+#include <random>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -51,6 +55,55 @@ inline tri::InteractionSettings settings(bool tight, double coherence = 0.0) {
   return s;
 }
 
+// Two rocks on a path through contact, for the tests that run many steps: rock a at a fixed
+// centre turning about axis_a, rock b at `d` along `dir` (plus a sideways sweep) turning about
+// axis_b; the directions drawn from `seed`. at() writes both world-frame meshes and fills the
+// bodies: rigid poses (with their shapes as frames), epsilon, mass 1e-4 kg, edges, omega.
+struct RockPairPath {
+  tri::Shape sa, sb;
+  Eigen::Vector3d axis_a, axis_b, dir, side;
+
+  RockPairPath(tri::Shape a, tri::Shape b, std::uint64_t seed) : sa(std::move(a)), sb(std::move(b)) {
+    std::mt19937_64 rng(seed);
+    auto u = [&rng] { return uniform(rng, -1, 1); };
+    axis_a = Eigen::Vector3d(u(), u(), 1).normalized();
+    axis_b = Eigen::Vector3d(1, u(), u()).normalized();
+    dir = Eigen::Vector3d(u(), u(), u()).normalized();
+    side = dir.unitOrthogonal();
+  }
+
+  // Angles turned so far (rad) and spin rates (rad/s) of a and b; sweep: b's sideways offset (m).
+  void at(const Eigen::Vector3d &xa, double d, double sweep, double angle_a, double angle_b,
+          double omega_a, double omega_b, double eps, tri::TriangleSoA &wa, tri::TriangleSoA &wb,
+          tri::Body &a, tri::Body &b) const {
+    a = tri::Body{};
+    b = tri::Body{};
+    a.pose.x = xa;
+    b.pose.x = xa + d * dir + sweep * side;
+    a.pose.q = Eigen::Quaterniond(Eigen::AngleAxisd(angle_a, axis_a));
+    b.pose.q = Eigen::Quaterniond(Eigen::AngleAxisd(angle_b, axis_b));
+    a.pose.radius = sa.bounding_radius;
+    b.pose.radius = sb.bounding_radius;
+    a.pose.frame = &sa;
+    b.pose.frame = &sb;
+    tri::transform_soa(sa.soa, a.pose.q.toRotationMatrix(), a.pose.x, wa);
+    tri::transform_soa(sb.soa, b.pose.q.toRotationMatrix(), b.pose.x, wb);
+    a.triangles = &wa;
+    b.triangles = &wb;
+    for (tri::Body *p : {&a, &b}) {
+      p->epsilon = eps;
+      p->state.mass = 1e-4;
+      p->state.x = p->pose.x;
+    }
+    a.longest_edge = sa.max_edge_length;
+    a.min_edge = sa.min_edge_length;
+    b.longest_edge = sb.max_edge_length;
+    b.min_edge = sb.min_edge_length;
+    a.state.omega = omega_a * axis_a;
+    b.state.omega = omega_b * axis_b;
+  }
+};
+
 inline void expect_bitwise(const tri::PairForceResult &ref, const tri::PairForceResult &got,
                            const std::string &what) {
   ASSERT_EQ(ref.force_a, got.force_a) << what;
@@ -61,6 +114,24 @@ inline void expect_bitwise(const tri::PairForceResult &ref, const tri::PairForce
   ASSERT_EQ(ref.max_overlap, got.max_overlap) << what;
   ASSERT_EQ(ref.min_distance, got.min_distance) << what;
   ASSERT_EQ(ref.intersecting, got.intersecting) << what;
+}
+
+// Two tangential histories, bit for bit.
+inline void expect_same_history(const double *ref, const double *got, const std::string &what) {
+  for (int k = 0; k < tri::kHistoryDoubles; ++k)
+    ASSERT_EQ(ref[k], got[k]) << what << ", history value " << k;
+}
+
+// A search's triangle contacts are exactly brute force's pairs, in the same order.
+inline void expect_brute_force_pairs(const tri::TriangleSoA &a, const tri::TriangleSoA &b,
+                                     double eps, const std::vector<tri::TriangleContact> &found,
+                                     const std::string &what) {
+  const auto bf = brute_force_contacts(a, eps, b, eps);
+  ASSERT_EQ(bf.size(), found.size()) << what;
+  for (std::size_t k = 0; k < bf.size(); ++k) {
+    ASSERT_EQ(bf[k].tri_a, found[k].tri_a) << what;
+    ASSERT_EQ(bf[k].tri_b, found[k].tri_b) << what;
+  }
 }
 
 } // namespace tri_test

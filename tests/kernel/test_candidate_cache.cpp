@@ -131,13 +131,8 @@ TEST(CandidateCache, KeptCandidatesChangeNothingOnMovingRotatingPairs) {
   const double eps = 1e-4, dt = 1e-5;
   long long kept_steps = 0, separated = 0, touching = 0, searched = 0;
   for (int pair = 0; pair < 4; ++pair) {
-    const Shape sa = rock(pair % 2 ? 40 : 20, 11 + pair), sb = rock(pair / 2 ? 40 : 20, 21 + pair);
-    std::mt19937_64 rng(700 + pair);
-    const Vector3d axis_a = Vector3d(uniform(rng, -1, 1), uniform(rng, -1, 1), 1).normalized();
-    const Vector3d axis_b = Vector3d(1, uniform(rng, -1, 1), uniform(rng, -1, 1)).normalized();
-    const Vector3d dir =
-        Vector3d(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)).normalized();
-    const Vector3d side = dir.unitOrthogonal();
+    const RockPairPath path(rock(pair % 2 ? 40 : 20, 11 + pair),
+                            rock(pair / 2 ? 40 : 20, 21 + pair), 700 + pair);
     double h_ref[kHistoryDoubles] = {}, h_got[kHistoryDoubles] = {}, axis[3] = {0, 0, 0};
     InteractionScratch scratch_ref, scratch_got;
     CandidateCache cache;
@@ -147,31 +142,9 @@ TEST(CandidateCache, KeptCandidatesChangeNothingOnMovingRotatingPairs) {
       const double t = double(step) / steps;
       // centre distance 4.6 -> 2.6 -> 4.6 mm with a sideways sweep, slow spins: a few um a step
       const double d = 0.0026 + 0.002 * std::abs(std::cos(M_PI * t));
-      RigidPose pa, pb;
-      pa.x = Vector3d(0.01, -0.02, 0.03);
-      pb.x = pa.x + d * dir + 0.0008 * std::sin(5 * t) * side;
-      pa.q = Eigen::Quaterniond(Eigen::AngleAxisd(1.5 * t, axis_a));
-      pb.q = Eigen::Quaterniond(Eigen::AngleAxisd(-2.0 * t, axis_b));
-      pa.radius = sa.bounding_radius;
-      pb.radius = sb.bounding_radius;
-      transform_soa(sa.soa, pa.q.toRotationMatrix(), pa.x, wa);
-      transform_soa(sb.soa, pb.q.toRotationMatrix(), pb.x, wb);
       Body a, b;
-      a.triangles = &wa;
-      b.triangles = &wb;
-      a.pose = pa;
-      b.pose = pb;
-      for (Body *p : {&a, &b}) {
-        p->epsilon = eps;
-        p->state.mass = 1e-4;
-        p->state.x = p->pose.x;
-      }
-      a.longest_edge = sa.max_edge_length;
-      a.min_edge = sa.min_edge_length;
-      b.longest_edge = sb.max_edge_length;
-      b.min_edge = sb.min_edge_length;
-      a.state.omega = 1.5 * axis_a;
-      b.state.omega = -2.0 * axis_b;
+      path.at(Vector3d(0.01, -0.02, 0.03), d, 0.0008 * std::sin(5 * t), 1.5 * t, -2.0 * t, 1.5,
+              -2.0, eps, wa, wb, a, b);
       ContactStats st_ref, st_got;
       const PairForceResult ref =
           body_interaction(a, b, settings(true), dt, h_ref, scratch_ref, st_ref);
@@ -179,20 +152,15 @@ TEST(CandidateCache, KeptCandidatesChangeNothingOnMovingRotatingPairs) {
           body_interaction(a, b, settings(true, 0.25), dt, h_got, scratch_got, st_got,
                            SeparationCache{axis, true, &cache});
       const std::string what = "pair " + std::to_string(pair) + " step " + std::to_string(step);
-      expect_bitwise(ref, got, what);
-      for (int k = 0; k < kHistoryDoubles; ++k)
-        ASSERT_EQ(h_ref[k], h_got[k]) << what;
+      ASSERT_NO_FATAL_FAILURE(expect_bitwise(ref, got, what));
+      ASSERT_NO_FATAL_FAILURE(expect_same_history(h_ref, h_got, what));
       kept_steps += st_got.candidates_kept;
       separated += st_got.bodies_separated;
       touching += ref.contacts_after > 0;
       if (st_got.bodies_separated == 0) {
         ++searched;
-        const auto bf = brute_force_contacts(wa, eps, wb, eps);
-        ASSERT_EQ(bf.size(), scratch_got.triangle_contacts.size()) << what;
-        for (std::size_t k = 0; k < bf.size(); ++k) {
-          ASSERT_EQ(bf[k].tri_a, scratch_got.triangle_contacts[k].tri_a) << what;
-          ASSERT_EQ(bf[k].tri_b, scratch_got.triangle_contacts[k].tri_b) << what;
-        }
+        ASSERT_NO_FATAL_FAILURE(
+            expect_brute_force_pairs(wa, wb, eps, scratch_got.triangle_contacts, what));
       } else {
         ASSERT_EQ(ref.contacts_after, 0) << what;
       }
@@ -248,9 +216,8 @@ TEST(CandidateCache, KeptCandidatesChangeNothingAgainstAWallPatch) {
     const PairForceResult got = body_interaction(a, b, settings(true, 0.05), dt, h_got, scratch_got,
                                                  st_got, SeparationCache{axis, true, &cache});
     const std::string what = "step " + std::to_string(step);
-    expect_bitwise(ref, got, what);
-    for (int k = 0; k < kHistoryDoubles; ++k)
-      ASSERT_EQ(h_ref[k], h_got[k]) << what;
+    ASSERT_NO_FATAL_FAILURE(expect_bitwise(ref, got, what));
+    ASSERT_NO_FATAL_FAILURE(expect_same_history(h_ref, h_got, what));
     kept_steps += st_got.candidates_kept;
     touching += ref.contacts_after > 0;
   }
@@ -266,20 +233,10 @@ TEST(CandidateCache, KeptCandidatesChangeNothingAgainstAWallPatch) {
 TEST(CandidateCache, EngineDeferredKernelsChangeNothing) {
   const double eps = 1e-4, dt = 1e-5;
   const int npairs = 24, steps = 600;
-  struct Path {
-    Shape sa, sb;
-    Vector3d axis_a, axis_b, dir, side;
-  };
-  std::vector<Path> paths;
-  for (int p = 0; p < npairs; ++p) {
-    std::mt19937_64 rng(900 + p);
-    Path path{rock(p % 2 ? 40 : 20, 31 + p), rock(p % 3 ? 20 : 40, 61 + p), {}, {}, {}, {}};
-    path.axis_a = Vector3d(uniform(rng, -1, 1), uniform(rng, -1, 1), 1).normalized();
-    path.axis_b = Vector3d(1, uniform(rng, -1, 1), uniform(rng, -1, 1)).normalized();
-    path.dir = Vector3d(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)).normalized();
-    path.side = path.dir.unitOrthogonal();
-    paths.push_back(path);
-  }
+  std::vector<RockPairPath> paths;
+  paths.reserve(npairs); // the poses name the shapes by address (RigidPose::frame)
+  for (int p = 0; p < npairs; ++p)
+    paths.emplace_back(rock(p % 2 ? 40 : 20, 31 + p), rock(p % 3 ? 20 : 40, 61 + p), 900 + p);
   // Per evaluation mode (direct, engine 1 thread, engine 2 threads): each pair's history, axis
   // and kept candidates.
   struct Kept {
@@ -302,36 +259,9 @@ TEST(CandidateCache, EngineDeferredKernelsChangeNothing) {
   for (int step = 0; step < steps; ++step) {
     const double t = double(step) / steps;
     for (int p = 0; p < npairs; ++p) {
-      const Path &path = paths[p];
       const double d = 0.0021 + 0.0012 * std::abs(std::cos(M_PI * (t + 0.04 * p)));
-      RigidPose pa, pb;
-      pa.x = Vector3d(0.01 * p, -0.02, 0.03);
-      pb.x = pa.x + d * path.dir + 0.0006 * std::sin(5 * t + p) * path.side;
-      pa.q = Eigen::Quaterniond(Eigen::AngleAxisd(1.2 * t + 0.3 * p, path.axis_a));
-      pb.q = Eigen::Quaterniond(Eigen::AngleAxisd(-1.7 * t, path.axis_b));
-      pa.radius = path.sa.bounding_radius;
-      pb.radius = path.sb.bounding_radius;
-      pa.frame = &path.sa;
-      pb.frame = &path.sb;
-      transform_soa(path.sa.soa, pa.q.toRotationMatrix(), pa.x, wa[p]);
-      transform_soa(path.sb.soa, pb.q.toRotationMatrix(), pb.x, wb[p]);
-      a[p] = Body{};
-      b[p] = Body{};
-      a[p].triangles = &wa[p];
-      b[p].triangles = &wb[p];
-      a[p].pose = pa;
-      b[p].pose = pb;
-      for (Body *body : {&a[p], &b[p]}) {
-        body->epsilon = eps;
-        body->state.mass = 1e-4;
-        body->state.x = body->pose.x;
-      }
-      a[p].longest_edge = path.sa.max_edge_length;
-      a[p].min_edge = path.sa.min_edge_length;
-      b[p].longest_edge = path.sb.max_edge_length;
-      b[p].min_edge = path.sb.min_edge_length;
-      a[p].state.omega = 1.2 * path.axis_a;
-      b[p].state.omega = -1.7 * path.axis_b;
+      paths[p].at(Vector3d(0.01 * p, -0.02, 0.03), d, 0.0006 * std::sin(5 * t + p),
+                  1.2 * t + 0.3 * p, -1.7 * t, 1.2, -1.7, eps, wa[p], wb[p], a[p], b[p]);
     }
     auto evaluate = [&](Kept &k, std::size_t p, InteractionScratch &scratch, ContactStats &stats) {
       return body_interaction(a[p], b[p], s, dt, k.history[p].data(), scratch, stats,

@@ -67,13 +67,8 @@ TEST(SeparatingAxis, KeptAxisAndTightCullChangeNothingOnMovingRotatingPairs) {
   const double eps = 1e-4, dt = 1e-5;
   long long separated = 0, touching = 0, searched = 0;
   for (int pair = 0; pair < 4; ++pair) {
-    const Shape sa = rock(pair % 2 ? 40 : 20, 11 + pair), sb = rock(pair / 2 ? 40 : 20, 21 + pair);
-    std::mt19937_64 rng(300 + pair);
-    const Vector3d axis_a = Vector3d(uniform(rng, -1, 1), uniform(rng, -1, 1), 1).normalized();
-    const Vector3d axis_b = Vector3d(1, uniform(rng, -1, 1), uniform(rng, -1, 1)).normalized();
-    const Vector3d dir =
-        Vector3d(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)).normalized();
-    const Vector3d side = dir.unitOrthogonal();
+    const RockPairPath path(rock(pair % 2 ? 40 : 20, 11 + pair),
+                            rock(pair / 2 ? 40 : 20, 21 + pair), 300 + pair);
     double h_ref[kHistoryDoubles] = {}, h_got[kHistoryDoubles] = {}, cache[3] = {0, 0, 0};
     InteractionScratch scratch_ref, scratch_got;
     TriangleSoA wa, wb;
@@ -82,47 +77,24 @@ TEST(SeparatingAxis, KeptAxisAndTightCullChangeNothingOnMovingRotatingPairs) {
       const double t = double(step) / steps;
       // centre distance 5.0 -> 2.4 -> 5.0 mm (bounding diameter 4 mm), with a sideways sweep
       const double d = 0.0024 + 0.0026 * std::abs(std::cos(M_PI * t));
-      const Vector3d xa(0.01, -0.02, 0.03), xb = xa + d * dir + 0.0008 * std::sin(5 * t) * side;
-      const Eigen::Matrix3d ra = Eigen::AngleAxisd(6.0 * t, axis_a).toRotationMatrix();
-      const Eigen::Matrix3d rb = Eigen::AngleAxisd(-9.0 * t, axis_b).toRotationMatrix();
-      transform_soa(sa.soa, ra, xa, wa);
-      transform_soa(sb.soa, rb, xb, wb);
       Body a, b;
-      a.triangles = &wa;
-      b.triangles = &wb;
-      for (Body *p : {&a, &b}) {
-        p->epsilon = eps;
-        p->state.mass = 1e-4;
-      }
-      a.longest_edge = sa.max_edge_length;
-      a.min_edge = sa.min_edge_length;
-      b.longest_edge = sb.max_edge_length;
-      b.min_edge = sb.min_edge_length;
-      a.state.x = xa;
-      b.state.x = xb;
-      a.state.omega = 6.0 * axis_a;
-      b.state.omega = -9.0 * axis_b;
-      b.state.v = -0.38 * dir;
+      path.at(Vector3d(0.01, -0.02, 0.03), d, 0.0008 * std::sin(5 * t), 6.0 * t, -9.0 * t, 6.0,
+              -9.0, eps, wa, wb, a, b);
+      b.state.v = -0.38 * path.dir;
       ContactStats st_ref, st_got;
       const PairForceResult ref =
           body_interaction(a, b, settings(false), dt, h_ref, scratch_ref, st_ref);
       const PairForceResult got = body_interaction(a, b, settings(true), dt, h_got, scratch_got,
                                                    st_got, SeparationCache{cache, true});
       const std::string what = "pair " + std::to_string(pair) + " step " + std::to_string(step);
-      expect_bitwise(ref, got, what);
-      for (int k = 0; k < kHistoryDoubles; ++k)
-        ASSERT_EQ(h_ref[k], h_got[k]) << what;
+      ASSERT_NO_FATAL_FAILURE(expect_bitwise(ref, got, what));
+      ASSERT_NO_FATAL_FAILURE(expect_same_history(h_ref, h_got, what));
       separated += st_got.bodies_separated;
       touching += ref.contacts_after > 0;
       if (st_got.bodies_separated == 0) {
         ++searched;
-        // The search's triangle contacts are exactly brute force's pairs.
-        const auto bf = brute_force_contacts(wa, eps, wb, eps);
-        ASSERT_EQ(bf.size(), scratch_got.triangle_contacts.size()) << what;
-        for (std::size_t k = 0; k < bf.size(); ++k) {
-          ASSERT_EQ(bf[k].tri_a, scratch_got.triangle_contacts[k].tri_a) << what;
-          ASSERT_EQ(bf[k].tri_b, scratch_got.triangle_contacts[k].tri_b) << what;
-        }
+        ASSERT_NO_FATAL_FAILURE(
+            expect_brute_force_pairs(wa, wb, eps, scratch_got.triangle_contacts, what));
         ASSERT_LE(st_got.triangle_pairs_tested, st_ref.triangle_pairs_tested) << what;
       } else {
         ASSERT_EQ(ref.contacts_after, 0) << what;
@@ -183,9 +155,8 @@ TEST(SeparatingAxis, KeptAxisAndWallPlanesChangeNothingAgainstAWallPatch) {
       const PairForceResult got = body_interaction(a, b, settings(true), dt, h_got, scratch_got,
                                                    st_got, SeparationCache{cache, true});
       const std::string what = "corner " + std::to_string(corner) + " step " + std::to_string(step);
-      expect_bitwise(ref, got, what);
-      for (int k = 0; k < kHistoryDoubles; ++k)
-        ASSERT_EQ(h_ref[k], h_got[k]) << what;
+      ASSERT_NO_FATAL_FAILURE(expect_bitwise(ref, got, what));
+      ASSERT_NO_FATAL_FAILURE(expect_same_history(h_ref, h_got, what));
       separated += st_got.bodies_separated;
       touching += ref.contacts_after > 0;
     }
