@@ -93,12 +93,12 @@ Eigen::Vector3d nearest_face_normal(const TriangleSoA &t, const Eigen::Vector3d 
 // centres; against the face of b nearest a's centre; along the face of a nearest b's centre
 // (a particle over a wall patch: the patch's normal). Zero if none does.
 Eigen::Vector3d new_separating_axis(const Body &a, const Body &b, double cutoff,
-                                    const ContactWorkspace &ws) {
+                                    const TrianglePairDistance *tested, int num_tested) {
   const TriangleSoA &ta = *a.triangles, &tb = *b.triangles;
   double best = std::numeric_limits<double>::infinity();
   Eigen::Vector3d closest = Eigen::Vector3d::Zero();
-  for (int k = 0; k < ws.tested; ++k) {
-    const TrianglePairDistance &r = ws.results[k];
+  for (int k = 0; k < num_tested; ++k) {
+    const TrianglePairDistance &r = tested[k];
     if (r.distance < best && r.distance > 0.0) {
       best = r.distance;
       closest = r.point_b - r.point_a;
@@ -148,10 +148,12 @@ bool walls_apart_by_planes(const TriangleSoA &particle, const TriangleSoA &wall,
 namespace {
 
 // What follows the distance kernel, once scratch.triangle_contacts holds the pair's triangle
-// contacts and scratch.distance its kernel results: the kept axis, the reduction, the force.
+// contacts (`tested`: the kernel's results on all its pairs): the kept axis, the reduction,
+// the force.
 PairForceResult after_kernel(const Body &a, const Body &b, const InteractionSettings &s,
                              double dt, double *history, InteractionScratch &scratch,
-                             SeparationCache cache);
+                             SeparationCache cache, const TrianglePairDistance *tested,
+                             int num_tested);
 
 // The second call for a pair whose job the engine ran (InteractionScratch::resume_job).
 PairForceResult resume_after_kernel(const Body &a, const Body &b, const InteractionSettings &s,
@@ -161,16 +163,13 @@ PairForceResult resume_after_kernel(const Body &a, const Body &b, const Interact
   const HybridJob &job = scratch.jobs[j];
   const InteractionScratch::JobOrigin &origin = scratch.job_origins[j];
   const TrianglePairDistance *results = scratch.job_results.data() + scratch.job_offsets[j];
-  ContactWorkspace &ws = scratch.distance; // as contacts_among_candidates leaves it
-  ws.results.assign(results, results + job.count);
-  ws.tested = job.count;
   const double cutoff = a.epsilon + b.epsilon;
   scratch.triangle_contacts.clear();
   contacts_from_results(job.pairs, results, job.count, cutoff, scratch.triangle_contacts, stats);
   if (origin.keep)
     cache.candidates->keep(&a.pose, *a.triangles, b.is_wall() ? nullptr : &b.pose, *b.triangles,
                            cutoff, origin.reach, job.pairs, job.count, results);
-  return after_kernel(a, b, s, dt, history, scratch, cache);
+  return after_kernel(a, b, s, dt, history, scratch, cache, results, job.count);
 }
 
 } // namespace
@@ -251,20 +250,22 @@ PairForceResult body_interaction(const Body &a, const Body &b, const Interaction
       cache.candidates->keep(pose_a, *a.triangles, pose_b, *b.triangles, cutoff, reach,
                              scratch.distance.pairs.data(), count, scratch.distance.results.data());
   }
-  return after_kernel(a, b, s, dt, history, scratch, cache);
+  return after_kernel(a, b, s, dt, history, scratch, cache, scratch.distance.results.data(),
+                      scratch.distance.tested);
 }
 
 namespace {
 
 PairForceResult after_kernel(const Body &a, const Body &b, const InteractionSettings &s,
                              double dt, double *history, InteractionScratch &scratch,
-                             SeparationCache cache) {
+                             SeparationCache cache, const TrianglePairDistance *tested,
+                             int num_tested) {
   const double cutoff = a.epsilon + b.epsilon;
   const RigidPose *pose_a = &a.pose, *pose_b = b.is_wall() ? nullptr : &b.pose;
   CandidateCache *kept = s.coherence > 0.0 ? cache.candidates : nullptr;
   if (cache.axis && cache.update) {
     const Eigen::Vector3d axis = scratch.triangle_contacts.empty()
-                                     ? new_separating_axis(a, b, cutoff, scratch.distance)
+                                     ? new_separating_axis(a, b, cutoff, tested, num_tested)
                                      : Eigen::Vector3d::Zero();
     for (int d = 0; d < 3; ++d)
       cache.axis[d] = axis[d];
