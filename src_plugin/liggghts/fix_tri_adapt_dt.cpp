@@ -2,6 +2,7 @@
 
 #include "approach_speed.h"
 #include "fix_tri_particles.h"
+#include "material_scales.h"
 #include "step_tally.h"
 
 #include "comm.h"
@@ -197,6 +198,9 @@ void FixTriAdaptDt::setup(int) {
           board.sources(tri_liggghts::SourceKind::walls) ==
       0)
     error->all(FLERR, "Fix tri/adapt_dt requires pair_style tri/gran or fix tri/wall");
+  contact_time_ = tri_liggghts::longest_contact_time(board, particles_->type_bodies());
+  stuck_steps_ = 0;
+  stuck_time_ = 0.0;
   std::string why;
   const double limit = approach_limit(update->dt, why);
   if (limit < update->dt && update->dt > dtmin_) {
@@ -207,8 +211,10 @@ void FixTriAdaptDt::setup(int) {
 
 // Real surfaces intersect while dt cannot go lower: the soft layer is overrun for good.
 void FixTriAdaptDt::check_stuck(const tri::InteractionTally &t) {
-  stuck_steps_ = update->dt <= dtmin_ && t.penetrations > 0 ? stuck_steps_ + 1 : 0;
-  if (stuck_steps_ < kStuckSteps)
+  const bool stuck = update->dt <= dtmin_ && t.penetrations > 0;
+  stuck_steps_ = stuck ? stuck_steps_ + 1 : 0;
+  stuck_time_ = stuck ? stuck_time_ + update->dt : 0.0;
+  if (stuck_steps_ < kStuckSteps || stuck_time_ < 2.0 * contact_time_)
     return;
   const tri_liggghts::ContactBoard &board = particles_->board();
   tri_liggghts::IntersectingPair p = board.first_intersecting(tri_liggghts::SourceKind::particle_pairs);
@@ -225,11 +231,12 @@ void FixTriAdaptDt::check_stuck(const tri::InteractionTally &t) {
   char msg[700];
   std::snprintf(msg, sizeof msg,
                 "Fix tri/adapt_dt: step " BIGINT_FORMAT ": dt has been at dtmin (%g s) for %d "
-                "steps while real surfaces intersect (%lld interaction(s), %s; deepest overlap "
-                "%g m = %.3g x the combined soft layer 2 epsilon): the contact force cannot push "
-                "them apart at this stiffness; use a stiffer kn, a wider epsilon, or a lower dtmin",
-                update->ntimestep, dtmin_, stuck_steps_, t.penetrations, who, t.max_overlap,
-                t.max_overlap / layer);
+                "steps (%g s, two contact times %g s: longer than any bounce) while real "
+                "surfaces intersect (%lld interaction(s), %s; deepest overlap %g m = %.3g x the "
+                "combined soft layer 2 epsilon): the contact force cannot push them apart at "
+                "this stiffness; use a stiffer kn, a wider epsilon, or a lower dtmin",
+                update->ntimestep, dtmin_, stuck_steps_, stuck_time_, 2.0 * contact_time_,
+                t.penetrations, who, t.max_overlap, t.max_overlap / layer);
   error->all(FLERR, msg);
 }
 

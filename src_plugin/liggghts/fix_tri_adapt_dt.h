@@ -18,10 +18,17 @@
 // smallest and largest dt). `log all`: every change. A run that oscillates between two rules
 // therefore writes a few lines per thousand steps, not one a step.
 //
-// Stuck at dtmin: when dt has been at dtmin for kStuckSteps steps in a row while real surfaces
-// intersect (compute tri/stats' penetrations > 0), halving can no longer help: the run stops
-// with an error naming a pair (or a particle and a wall), the deepest overlap in units of the
-// combined soft layer, and what to change (a stiffer kn, a wider epsilon, a lower dtmin).
+// Stuck at dtmin: real surfaces that intersect (compute tri/stats' penetrations > 0) are not
+// by themselves an error: the contact force keeps growing through the intersection
+// (penetration_depth.h), so a soft or fast impact bounces out again, and one deeper than the
+// model resolves is stopped by the run-safety check. What halving cannot mend is bodies that
+// stay intersected: when dt has been at dtmin, with some real surfaces intersecting at every
+// step, for kStuckSteps steps and for longer than two of the longest contact times
+// pi sqrt(meff / kn) of the deck's materials (no impact, even a damped one, keeps bodies
+// together that long: they rest or are pressed on each other through their soft layers), the
+// run stops with an error naming a pair (or a particle and a wall), the deepest overlap in
+// units of the combined soft layer, and what to change (a stiffer kn, a wider epsilon, a lower
+// dtmin).
 //
 //   fix ID all tri/adapt_dt dtmax DT dtmin DT [fraction F] [growth G] [approach A]
 //                           [log N|all]
@@ -63,7 +70,9 @@ private:
     long long quiet_halvings = 0, quiet_growths = 0, quiet_limits = 0;
     double dt_min = 0.0, dt_max = 0.0;
   } window_;
-  int stuck_steps_ = 0; // consecutive steps at dtmin with intersecting surfaces
+  int stuck_steps_ = 0;      // consecutive steps at dtmin with intersecting surfaces
+  double stuck_time_ = 0.0;  // s, their duration
+  double contact_time_ = 0.0; // s, the longest contact time (material_scales.h), at setup
   void close_log_window(long long last_step);
   void check_stuck(const tri::InteractionTally &t);
   // The largest dt the approach bound allows now (same on every rank); if below `dt`, `why`

@@ -215,6 +215,14 @@ AutoEpsilon choose_auto_epsilon(LAMMPS_NS::LAMMPS *lmp, const ContactBoard &boar
   return best;
 }
 
+double longest_contact_time(const ContactBoard &board, const TypeBodies &bodies) {
+  const std::vector<ContactBoard::PublishedMaterial> mats = board.materials();
+  double longest = 0.0;
+  for (const Entry &e : entries(mats, bodies))
+    longest = std::max(longest, tri::linear_contact_time(e.kn, e.meff_max));
+  return longest;
+}
+
 void check_timestep(LAMMPS_NS::LAMMPS *lmp, const ContactBoard &board, const TypeBodies &bodies,
                     double epsilon, bool report) {
   const std::vector<ContactBoard::PublishedMaterial> mats = board.materials();

@@ -69,4 +69,10 @@ AutoEpsilon choose_auto_epsilon(LAMMPS_NS::LAMMPS *lmp, const ContactBoard &boar
 void check_timestep(LAMMPS_NS::LAMMPS *lmp, const ContactBoard &board, const TypeBodies &bodies,
                     double epsilon, bool report);
 
+// The longest undamped contact time pi sqrt(meff / kn) over the published pairs of types that
+// can touch, meff of the HEAVIEST shapes: how long one impact keeps two bodies together (fix
+// tri/adapt_dt tells a bounce through the soft layers from bodies that stay intersected). 0
+// where no source has published a material.
+double longest_contact_time(const ContactBoard &board, const TypeBodies &bodies);
+
 } // namespace tri_liggghts

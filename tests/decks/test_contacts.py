@@ -222,23 +222,43 @@ def test_adapt_dt_limits(ctx):
     print(f"log all: {len(every)} changes; log 200: {len(listed)} lines + {len(summaries)} "
           f"summaries of {quiet} more")
 
-    # (2) Soft cubes at 2 x 2 m/s: a linear spring would need 2.5 mm of overlap (12 x the
-    # combined layer of 0.2 mm); dt is pinned at dtmin = dtmax, so nothing can be halved.
-    want = (r"Fix tri/adapt_dt: step \d+: dt has been at dtmin \(1e-06 s\) for 10 steps while "
-            r"real surfaces intersect \(1 interaction\(s\), e\.g\. particles 1 and 2; deepest "
-            r"overlap \S+ m = \S+ x the combined soft layer 2 epsilon\): the contact force cannot "
-            r"push them apart at this stiffness; use a stiffer kn, a wider epsilon, or a lower "
-            r"dtmin")
-    line, out = expect_error(ctx, "in.contact_adapt", {"vx": 2.0, "knv": 50, "dtmax": 1e-6,
-                                                       "dtmin": 1e-6, "adtlog": "all"},
-                             want, with_output=True)
+    # (2) A deep bounce is not stuck: cubes (kn 2000 N/m, 8e-5 kg effective, contact time
+    # 0.63 ms) meeting at 2 x 1.5 m/s, which a linear spring stops at 0.6 mm of overlap, 3 x
+    # the combined layer of 0.2 mm, with dt pinned at dtmin = dtmax = 1e-6 s. The real surfaces
+    # intersect for hundreds of steps (the first-intersection WARNING, once), the contact force
+    # pushes them apart through the intersection, and the run ends without an error.
+    code, out = run_deck(ctx, "in.contact_adapt", {"vx": 1.5, "dtmax": 1e-6, "dtmin": 1e-6,
+                                                   "adtlog": "all", "nsteps": 1500})
     warnings = re.findall(r"WARNING: tri/particles: step \d+: real surfaces intersect for the "
                           r"first time in this run \(1 interaction\(s\), e\.g\. particles 1 and "
                           r"2; deepest overlap", out)
     check(len(warnings) == 1, f"{len(warnings)} first-intersection warnings, expected 1")
+    rows = thermo_rows(out)
+    last = rows[-1]
+    check(last["stats.pairs_in_contact"] == 0,
+          "the cubes of the deep bounce are still in contact at the end")
+    print(f"deep bounce at dtmin: {len(rows)} rows, no error, apart at the end")
+
+    # (3) Cubes pressed together by 1 N each, critically damped (gamman 1e4 1/s): they settle
+    # at the overlap F / kn = 0.5 mm, 2.5 x the combined layer, so the real surfaces intersect
+    # 0.3 mm deep and stay so. dt pinned at dtmin = dtmax: once they have intersected for two
+    # contact times (1257 steps), the run stops with an error naming the pair, the depth and
+    # the remedy.
+    want = (r"Fix tri/adapt_dt: step \d+: dt has been at dtmin \(1e-06 s\) for (\d+) steps "
+            r"\(\S+ s, two contact times \S+ s: longer than any bounce\) while real surfaces "
+            r"intersect \(1 interaction\(s\), e\.g\. particles 1 and 2; deepest overlap \S+ m = "
+            r"(\S+) x the combined soft layer 2 epsilon\): the contact force cannot push them "
+            r"apart at this stiffness; use a stiffer kn, a wider epsilon, or a lower dtmin")
+    line = expect_error(ctx, "in.contact_adapt", {"vx": 0.0, "press": 1.0, "gn": 1e4,
+                                                  "dtmax": 1e-6, "dtmin": 1e-6, "adtlog": "all"},
+                        want)
+    m = re.search(want, line)
+    steps, layers = int(m.group(1)), float(m.group(2))
+    check(1257 <= steps <= 1258, f"stopped after {steps} steps, not after two contact times")
+    check(2.3 < layers < 2.7, f"deepest overlap {layers} layers, expected about 2.5")
     print(line)
 
-    # (3) A bad log window.
+    # (4) A bad log window.
     expect_error(ctx, "in.contact_adapt", {"adtlog": 2.5},
                  re.escape("Fix tri/adapt_dt: 'log' expects a number of steps or 'all', got "
                            "'2.5'"))
