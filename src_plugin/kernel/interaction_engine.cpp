@@ -15,6 +15,34 @@ void InteractionEngine::prepare(std::size_t n, int threads) {
   failure_.clear();
 }
 
+void InteractionEngine::split_groups(long groups, int threads) {
+  if (num_ranges_ < threads) {
+    ranges_.reset(new GroupRange[static_cast<std::size_t>(threads)]);
+    num_ranges_ = threads;
+  }
+  for (int t = 0; t < threads; ++t) {
+    const auto front = static_cast<std::uint64_t>(groups * t / threads);
+    const auto back = static_cast<std::uint64_t>(groups * (t + 1) / threads);
+    ranges_[t].bounds.store(front << 32 | back, std::memory_order_relaxed);
+  }
+  for (int t = threads; t < num_ranges_; ++t)
+    ranges_[t].bounds.store(0, std::memory_order_relaxed);
+}
+
+long InteractionEngine::take_group(int range, int thread) {
+  std::atomic<std::uint64_t> &bounds = ranges_[range].bounds;
+  std::uint64_t now = bounds.load(std::memory_order_relaxed);
+  for (;;) {
+    const std::uint64_t front = now >> 32, back = now & 0xffffffffu;
+    if (front >= back)
+      return -1;
+    const bool own = range == thread;
+    const std::uint64_t next = own ? (front + 1) << 32 | back : front << 32 | (back - 1);
+    if (bounds.compare_exchange_weak(now, next, std::memory_order_relaxed))
+      return static_cast<long>(own ? front : back - 1);
+  }
+}
+
 void InteractionEngine::record_failure(std::size_t k, const char *what) {
 #pragma omp critical(tri_engine_failure)
   if (k < failed_task_) {

@@ -112,6 +112,16 @@ void PairTriGran::collect_tasks() {
   candidates_.end_step();
 }
 
+// A task's kept state (candidates, contact history, axis) is scattered over the heap; asked for
+// a few tasks ahead it arrives while the tasks before it run.
+void PairTriGran::prefetch(const Task &t) {
+  if (t.candidates)
+    t.candidates->prefetch();
+  if (t.touching_values)
+    for (int offset = 0; offset < dnum_pairgran; offset += 8)
+      __builtin_prefetch(t.touching_values + offset);
+}
+
 void PairTriGran::compute_force(int eflag, int vflag, int) {
   // Granular styles tally no pair energy or virial (as LIGGGHTS's own PairGran styles).
   evflag = vflag_fdotr = 0;
@@ -126,6 +136,8 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
                                      nthreads);
   engine_.run(tasks_.size(), nthreads,
               [&](std::size_t k, tri::InteractionScratch &scratch, tri::ContactStats &stats) {
+                if (k + kPrefetchAhead < tasks_.size())
+                  prefetch(tasks_[k + kPrefetchAhead]);
                 const Task &task = tasks_[k];
                 const int a = task.swapped ? task.j : task.i, b = task.swapped ? task.i : task.j;
                 tri::InteractionSettings s = settings_.interaction;

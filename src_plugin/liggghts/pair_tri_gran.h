@@ -69,6 +69,8 @@ private:
     int *touching;   // LIGGGHTS keeps (migrates, restarts) the history only where this is set
     tri::CandidateCache *candidates; // the pair's kept candidates, or null
   };
+  static constexpr std::size_t kPrefetchAhead = 2;
+  void prefetch(const Task &t);
   class FixTriParticles *particles_ = nullptr;
   int board_slot_ = -1;
   tri_liggghts::ContactSettings settings_;

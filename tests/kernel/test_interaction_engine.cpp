@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <atomic>
 #include <stdexcept>
 #include <vector>
 
@@ -115,6 +116,36 @@ TEST(InteractionEngine, ThreadCountChangesNothing) {
     EXPECT_EQ(c.value(one.tally), c.value(four.tally)) << c.name;
   EXPECT_EQ(one.tally.body_pairs_checked, 11);
   EXPECT_GT(one.tally.distance.triangle_pairs_tested, 0);
+}
+
+// The schedule on several threads (contiguous ranges, the rest taken from their backs): every
+// task runs exactly once and lands in its own slot, for task counts below, at and above a
+// group and ranges of very uneven cost (the last tasks spin, as a hopper's crowded pairs).
+TEST(InteractionEngine, EveryTaskRunsOnceWhateverTheSchedule) {
+  for (const int threads : {2, 3, 5})
+    for (const std::size_t n : {std::size_t(0), std::size_t(1), std::size_t(15), std::size_t(16),
+                                std::size_t(17), std::size_t(1000)}) {
+      tri::InteractionEngine engine;
+      std::vector<std::atomic<int>> runs(n);
+      for (int repeat = 0; repeat < 2; ++repeat) { // the ranges are reset between runs
+        for (std::atomic<int> &r : runs)
+          r = 0;
+        engine.run(n, threads, [&](std::size_t k, tri::InteractionScratch &, tri::ContactStats &) {
+          ++runs[k];
+          volatile double spin = 0.0; // uneven cost: the last tenth of the tasks is slow
+          for (int i = 0; k >= n - n / 10 && i < 20000; ++i)
+            spin = spin + 1.0;
+          tri::PairForceResult r;
+          r.force_a = Vector3d(double(k), 0.0, 0.0);
+          return r;
+        });
+        ASSERT_EQ(engine.size(), n);
+        for (std::size_t k = 0; k < n; ++k) {
+          EXPECT_EQ(runs[k].load(), 1) << n << " tasks, " << threads << " threads, task " << k;
+          EXPECT_EQ(engine.result(k).force_a.x(), double(k));
+        }
+      }
+    }
 }
 
 TEST(InteractionEngine, AppliesInAtomThenPartnerOrder) {
