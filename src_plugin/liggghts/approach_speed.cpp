@@ -13,26 +13,6 @@
 namespace tri_liggghts {
 namespace {
 
-struct PairGeometry {
-  double gap, normal_speed, spin_speed;
-};
-
-PairGeometry geometry(const LAMMPS_NS::Atom *atom, int i, int j) {
-  double **x = atom->x, **v = atom->v, **omega = atom->omega;
-  const double *radius = atom->radius;
-  const double d[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
-  const double dv[3] = {v[j][0] - v[i][0], v[j][1] - v[i][1], v[j][2] - v[i][2]};
-  const double r = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-  PairGeometry g;
-  g.gap = r - radius[i] - radius[j];
-  // Coincident centres: no direction to approach along; count the whole relative speed.
-  g.normal_speed = r > 0.0 ? -(dv[0] * d[0] + dv[1] * d[1] + dv[2] * d[2]) / r
-                           : std::sqrt(dv[0] * dv[0] + dv[1] * dv[1] + dv[2] * dv[2]);
-  auto norm = [](const double *w) { return std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]); };
-  g.spin_speed = norm(omega[i]) * radius[i] + norm(omega[j]) * radius[j];
-  return g;
-}
-
 // Calls f(i, j) for every pair of the list published on the board; false if there is none.
 template <class F> bool for_each_listed_pair(const ContactBoard &board, F f) {
   const LAMMPS_NS::NeighList *list = board.particle_pairs();
@@ -49,12 +29,28 @@ template <class F> bool for_each_listed_pair(const ContactBoard &board, F f) {
 
 } // namespace
 
+PairGeometry pair_geometry(const LAMMPS_NS::Atom *atom, int i, int j) {
+  double **x = atom->x, **v = atom->v, **omega = atom->omega;
+  const double *radius = atom->radius;
+  const double d[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
+  const double dv[3] = {v[j][0] - v[i][0], v[j][1] - v[i][1], v[j][2] - v[i][2]};
+  const double r = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  PairGeometry g;
+  g.gap = r - radius[i] - radius[j];
+  // Coincident centres: no direction to approach along; count the whole relative speed.
+  g.normal_speed = r > 0.0 ? -(dv[0] * d[0] + dv[1] * d[1] + dv[2] * d[2]) / r
+                           : std::sqrt(dv[0] * dv[0] + dv[1] * dv[1] + dv[2] * dv[2]);
+  auto norm = [](const double *w) { return std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]); };
+  g.spin_speed = norm(omega[i]) * radius[i] + norm(omega[j]) * radius[j];
+  return g;
+}
+
 PairApproach pair_dt_limit(LAMMPS_NS::LAMMPS *lmp, const ContactBoard &board, double depth) {
   PairApproach out;
   out.dt_limit = std::numeric_limits<double>::infinity();
   const LAMMPS_NS::Atom *atom = lmp->atom;
   for_each_listed_pair(board, [&](int i, int j) {
-    const PairGeometry g = geometry(atom, i, j);
+    const PairGeometry g = pair_geometry(atom, i, j);
     const double closing = std::max(g.normal_speed, 0.0) + g.spin_speed;
     if (!(closing > 0.0))
       return;
@@ -75,18 +71,12 @@ PairApproach pair_dt_limit(LAMMPS_NS::LAMMPS *lmp, const ContactBoard &board, do
   return out;
 }
 
-FastestPair fastest_pair_within_reach(LAMMPS_NS::LAMMPS *lmp, const ContactBoard &board) {
-  FastestPair out;
-  const LAMMPS_NS::Atom *atom = lmp->atom;
-  for_each_listed_pair(board, [&](int i, int j) {
-    const PairGeometry g = geometry(atom, i, j);
-    if (g.gap < 0.0 && g.normal_speed > out.normal_speed) {
-      out.normal_speed = g.normal_speed;
-      out.tag_i = atom->tag[i];
-      out.tag_j = atom->tag[j];
-    }
-  });
-  return out;
+void FastestPair::consider(const PairGeometry &g, long i, long j) {
+  if (g.gap < 0.0 && g.normal_speed > normal_speed) {
+    normal_speed = g.normal_speed;
+    tag_i = i;
+    tag_j = j;
+  }
 }
 
 FastestParticle fastest_particle(LAMMPS_NS::LAMMPS *lmp) {

@@ -12,6 +12,7 @@
 #pragma once
 
 namespace LAMMPS_NS {
+class Atom;
 class LAMMPS;
 }
 
@@ -31,14 +32,21 @@ struct PairApproach {
 // Pairs of the board's particle-pair list on this rank (none before a list is published).
 PairApproach pair_dt_limit(LAMMPS_NS::LAMMPS *lmp, const ContactBoard &board, double depth);
 
+// One pair's figures, as defined above (symmetric in i and j).
+struct PairGeometry {
+  double gap, normal_speed, spin_speed;
+};
+PairGeometry pair_geometry(const LAMMPS_NS::Atom *atom, int i, int j);
+
+// The pair within reach (gap < 0) whose centres approach fastest (normal speed only: a
+// spinning pair that is being pushed apart is not approaching). Pair tri/gran offers each of
+// its tasks (the pairs within reach) in task order and publishes the result on the board.
 struct FastestPair {
   double normal_speed = 0.0; // m/s, largest among pairs within reach (gap < 0)
   long tag_i = 0, tag_j = 0;
+  // Keeps the pair if it is within reach and approaches strictly faster (ties: the first).
+  void consider(const PairGeometry &g, long tag_i, long tag_j);
 };
-
-// The pair within reach whose centres approach fastest on this rank (normal speed only: a
-// spinning pair that is being pushed apart is not approaching).
-FastestPair fastest_pair_within_reach(LAMMPS_NS::LAMMPS *lmp, const ContactBoard &board);
 
 struct FastestParticle {
   double speed = 0.0; // |v| + |omega| * radius, m/s

@@ -72,6 +72,7 @@ void ContactBoard::clear_tallies() {
     s.first = IntersectingPair{};
     s.deepest = DeepestContact{};
   }
+  fastest_pair_ = FastestPair{};
 }
 
 void ContactBoard::clear_sources() {

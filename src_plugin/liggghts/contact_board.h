@@ -15,6 +15,7 @@
 // LIGGGHTS-free (NeighList is only pointed to), so it is tested alone.
 #pragma once
 
+#include "approach_speed.h"
 #include "interaction_tally.h"
 
 #include <string>
@@ -72,6 +73,9 @@ public:
   // approach checks (approach_speed.h). Null until published.
   void publish_particle_pairs(const LAMMPS_NS::NeighList *list) { particle_pairs_ = list; }
   void publish_material(int slot, const MaterialHint &hint);
+  // The particle-pair source's fastest approaching pair within reach (approach_speed.h), for
+  // the run-safety check; cleared with the tallies.
+  void publish_fastest_pair(const FastestPair &pair) { fastest_pair_ = pair; }
   // fix tri/adapt_dt: dt stays within [dtmin, dtmax].
   void publish_adaptive_dt(double dtmin, double dtmax) {
     adaptive_dt_ = true;
@@ -87,6 +91,7 @@ public:
   IntersectingPair first_intersecting(SourceKind kind) const; // lowest slot that found one
   DeepestContact deepest() const; // over every source (ties: the lowest slot)
   const LAMMPS_NS::NeighList *particle_pairs() const { return particle_pairs_; }
+  const FastestPair &fastest_pair() const { return fastest_pair_; }
   // The material hints published so far, with their sources' kinds, in slot order.
   struct PublishedMaterial {
     SourceKind kind;
@@ -110,6 +115,7 @@ private:
   };
   std::vector<Source> sources_;
   const LAMMPS_NS::NeighList *particle_pairs_ = nullptr;
+  FastestPair fastest_pair_;
   bool adaptive_dt_ = false;
   double dtmin_ = 0.0, dtmax_ = 0.0;
 };

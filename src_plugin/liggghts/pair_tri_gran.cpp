@@ -112,6 +112,29 @@ void PairTriGran::collect_tasks() {
   candidates_.end_step();
 }
 
+tri::PairForceResult PairTriGran::evaluate(const Task &task, tri::InteractionScratch &scratch,
+                                           tri::ContactStats &stats, double dt,
+                                           bool update_history) {
+  const int a = task.swapped ? task.j : task.i, b = task.swapped ? task.i : task.j;
+  tri::InteractionSettings s = settings_.interaction;
+  s.coefficients = materials_.get(atom->type[a], atom->type[b]);
+  // Stored as seen from (i, j); the kernel sees it from (a, b), and the view writes the values
+  // back when it goes out of scope.
+  tri::HistoryView history(task.history, task.swapped, update_history);
+  const double sign = task.swapped ? -1.0 : 1.0;
+  double axis[3] = {0.0, 0.0, 0.0};
+  if (task.axis)
+    for (int d = 0; d < 3; ++d)
+      axis[d] = sign * task.axis[d];
+  tri::SeparationCache cache{task.axis ? axis : nullptr, update_history, task.candidates};
+  const tri::PairForceResult r = tri::body_interaction(
+      particles_->body(a), particles_->body(b), s, dt, history.data(), scratch, stats, cache);
+  if (task.axis && update_history)
+    for (int d = 0; d < 3; ++d)
+      task.axis[d] = sign * axis[d];
+  return r;
+}
+
 // A task's kept state (candidates, contact history, axis) is scattered over the heap; asked for
 // a few tasks ahead it arrives while the tasks before it run.
 void PairTriGran::prefetch(const Task &t) {
@@ -131,6 +154,7 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
   const bool update_history = shearupdate_ != 0;
   collect_tasks();
 
+  task_geometry_.resize(tasks_.size());
   const int nthreads = tri_liggghts::pair_loop_threads(settings_.loop, tasks_.size());
   particles_->ensure_world_triangles(task_atoms_.data(), static_cast<int>(task_atoms_.size()),
                                      nthreads);
@@ -139,24 +163,16 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
                 if (k + kPrefetchAhead < tasks_.size())
                   prefetch(tasks_[k + kPrefetchAhead]);
                 const Task &task = tasks_[k];
-                const int a = task.swapped ? task.j : task.i, b = task.swapped ? task.i : task.j;
-                tri::InteractionSettings s = settings_.interaction;
-                s.coefficients = materials_.get(atom->type[a], atom->type[b]);
-                // Stored as seen from (i, j); the kernel sees it from (a, b).
-                tri::HistoryView history(task.history, task.swapped, update_history);
-                const double sign = task.swapped ? -1.0 : 1.0;
-                double axis[3] = {0.0, 0.0, 0.0};
-                if (task.axis)
-                  for (int d = 0; d < 3; ++d)
-                    axis[d] = sign * task.axis[d];
-                tri::SeparationCache cache{task.axis ? axis : nullptr, update_history,
-                                           task.candidates};
                 const tri::PairForceResult r =
-                    tri::body_interaction(particles_->body(a), particles_->body(b), s, dt,
-                                          history.data(), scratch, stats, cache);
-                if (task.axis && update_history)
-                  for (int d = 0; d < 3; ++d)
-                    task.axis[d] = sign * axis[d];
+                    evaluate(task, scratch, stats, dt, update_history);
+                // The task's own bookkeeping, here on the threads rather than after the loop,
+                // once evaluate() has written its history back.
+                if (task.touching) { // the tangential history or the axis: LIGGGHTS keeps all
+                  const double *values = task.touching_values; // or nothing
+                  *task.touching = std::any_of(values, values + dnum_pairgran,
+                                               [](double v) { return v != 0.0; });
+                }
+                task_geometry_[k] = tri_liggghts::pair_geometry(atom, task.i, task.j);
                 return r;
               });
   if (engine_.failed())
@@ -165,14 +181,12 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
   const tagint *tag = atom->tag;
   tri_liggghts::IntersectingPair first;
   tri_liggghts::DeepestContact deepest;
+  tri_liggghts::FastestPair fastest;
   engine_.clear_contributions();
   for (std::size_t k = 0; k < tasks_.size(); ++k) {
     const Task &t = tasks_[k];
     const tri::PairForceResult &r = engine_.result(k);
-    if (t.touching) { // the tangential history or the axis: LIGGGHTS keeps all or nothing
-      const double *values = t.touching_values;
-      *t.touching = std::any_of(values, values + dnum_pairgran, [](double v) { return v != 0.0; });
-    }
+    fastest.consider(task_geometry_[k], tag[t.i], tag[t.j]);
     if (r.intersecting && !first.found())
       first = {std::min(tag[t.i], tag[t.j]), std::max(tag[t.i], tag[t.j])};
     deepest.consider(r, std::min(tag[t.i], tag[t.j]), std::max(tag[t.i], tag[t.j]));
@@ -189,6 +203,7 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
   tri_liggghts::ContactBoard &board = particles_->board();
   board.publish(board_slot_, engine_.tally(), first);
   board.publish_deepest(board_slot_, deepest);
+  board.publish_fastest_pair(fastest);
   board.publish_particle_pairs(list);
 }
 

@@ -38,6 +38,7 @@
 
 #include "pair_gran.h"
 
+#include "approach_speed.h"
 #include "candidate_store.h"
 #include "contact_settings.h"
 #include "interaction_engine.h"
@@ -71,12 +72,16 @@ private:
   };
   static constexpr std::size_t kPrefetchAhead = 2;
   void prefetch(const Task &t);
+  // One task through body_interaction, its history and axis as seen from (a, b).
+  tri::PairForceResult evaluate(const Task &task, tri::InteractionScratch &scratch,
+                                tri::ContactStats &stats, double dt, bool update_history);
   class FixTriParticles *particles_ = nullptr;
   int board_slot_ = -1;
   tri_liggghts::ContactSettings settings_;
   tri_liggghts::MaterialTable materials_;
   std::vector<Task> tasks_;
   std::vector<int> task_atoms_; // both atoms of every task, for their world-frame triangles
+  std::vector<tri_liggghts::PairGeometry> task_geometry_; // per task, for the run-safety check
   tri::InteractionEngine engine_;
   tri_liggghts::CandidateStore candidates_;
   int axis_offset_ = -1; // where the separating axis starts in a pair's history values

@@ -26,7 +26,7 @@ void RunSafetyMonitor::after_pair_forces(const ContactBoard &board) {
   if (board.sources(SourceKind::particle_pairs) == 0 ||
       board.local(TallySource::pair).contacts_after == 0)
     return;
-  const FastestPair p = fastest_pair_within_reach(lmp_, board);
+  const FastestPair &p = board.fastest_pair();
   unresolved_.step = p.normal_speed * lmp_->update->dt;
   unresolved_.speed = p.normal_speed;
   unresolved_.tag_i = p.tag_i;
