@@ -224,11 +224,7 @@ void FixTriParticles::pre_force(int) {
   initialise_unset_atoms();
   comm->forward_comm_fix(this);
   // A new force evaluation: world-frame triangles are built when a source asks for them.
-  const std::size_t n = static_cast<std::size_t>(atom->nlocal + atom->nghost);
-  if (world_.size() < n)
-    world_.resize(n);
-  if (world_stamp_.size() < n)
-    world_stamp_.resize(n, 0);
+  size_world(static_cast<std::size_t>(atom->nlocal + atom->nghost));
   ++evaluation_;
   board_.clear_tallies(); // this force evaluation's sources publish next
 }
@@ -238,17 +234,40 @@ void FixTriParticles::transform_atom(int i) {
   if (s < 0)
     return;
   double **x = atom->x;
-  const Eigen::Matrix3d rotation = orientation(i).toRotationMatrix();
+  const Eigen::Quaterniond q = orientation(i);
+  const Eigen::Matrix3d rotation = q.toRotationMatrix();
   tri::transform_soa(shapes_[s].soa, rotation, Eigen::Vector3d(x[i][0], x[i][1], x[i][2]),
                      world_[i]);
+  const tri::Shape &shape = shapes_[s];
+  tri::Body &b = bodies_[i];
+  b.triangles = &world_[i];
+  b.epsilon = epsilon_;
+  b.longest_edge = shape.max_edge_length;
+  b.min_edge = shape.min_edge_length;
+  b.thinnest = shape.thinnest_extent;
+  b.state.x = Eigen::Vector3d(x[i][0], x[i][1], x[i][2]);
+  b.state.v = Eigen::Vector3d(atom->v[i][0], atom->v[i][1], atom->v[i][2]);
+  b.state.omega = Eigen::Vector3d(atom->omega[i][0], atom->omega[i][1], atom->omega[i][2]);
+  b.state.mass = atom->rmass[i];
+  b.pose.x = b.state.x;
+  b.pose.q = q;
+  b.pose.radius = shape.bounding_radius;
+  b.pose.frame = &shape.soa;
+}
+
+void FixTriParticles::size_world(std::size_t n) {
+  if (world_stamp_.size() < n)
+    world_stamp_.resize(n, 0);
+  if (world_.size() >= n)
+    return;
+  world_.resize(n);
+  bodies_.resize(n);
+  for (std::size_t k = 0; k < n; ++k) // the triangles may have moved
+    bodies_[k].triangles = &world_[k];
 }
 
 void FixTriParticles::ensure_world_triangles(const int *atoms, int n, int threads) {
-  const std::size_t need = static_cast<std::size_t>(atom->nlocal + atom->nghost);
-  if (world_.size() < need)
-    world_.resize(need);
-  if (world_stamp_.size() < need)
-    world_stamp_.resize(need, 0);
+  size_world(static_cast<std::size_t>(atom->nlocal + atom->nghost));
   // Each atom once: marked here, serially, then transformed (possibly on several threads).
   pending_world_.clear();
   for (int k = 0; k < n; ++k) {
@@ -274,25 +293,6 @@ void FixTriParticles::update_world_triangles(int n) {
   for (int i = 0; i < n; ++i)
     all[i] = i;
   ensure_world_triangles(all.data(), n);
-}
-
-tri::Body FixTriParticles::body(int i) const {
-  const tri::Shape &s = shapes_[shape_index(i)];
-  tri::Body b;
-  b.triangles = &world_[i];
-  b.epsilon = epsilon_;
-  b.longest_edge = s.max_edge_length;
-  b.min_edge = s.min_edge_length;
-  b.thinnest = s.thinnest_extent;
-  b.state.x = Eigen::Vector3d(atom->x[i][0], atom->x[i][1], atom->x[i][2]);
-  b.state.v = Eigen::Vector3d(atom->v[i][0], atom->v[i][1], atom->v[i][2]);
-  b.state.omega = Eigen::Vector3d(atom->omega[i][0], atom->omega[i][1], atom->omega[i][2]);
-  b.state.mass = atom->rmass[i];
-  b.pose.x = b.state.x;
-  b.pose.q = orientation(i);
-  b.pose.radius = s.bounding_radius;
-  b.pose.frame = &s.soa;
-  return b;
 }
 
 /* ---------------- per-atom storage: the LIGGGHTS callbacks ---------------- */
@@ -459,7 +459,8 @@ double FixTriParticles::memory_usage() {
   double bytes = static_cast<double>(atom->nmax) * (kValues + kPending) * sizeof(double);
   for (const tri::TriangleSoA &w : world_)
     bytes += 3.0 * w.x.capacity() * sizeof(double) + sizeof(w);
-  bytes += static_cast<double>(world_stamp_.capacity() * sizeof(long long) +
+  bytes += static_cast<double>(bodies_.capacity() * sizeof(tri::Body) +
+                               world_stamp_.capacity() * sizeof(long long) +
                                pending_world_.capacity() * sizeof(int));
   return bytes;
 }

@@ -133,8 +133,11 @@ public:
   // update_world_triangles) has included i in this force evaluation.
   const tri::TriangleSoA &world_triangles(int i) const { return world_[i]; }
   // Atom i (owned or ghost) as the contact kernel sees it: its world-frame triangles, soft
-  // layer, edge lengths, and x, v, omega, rmass.
-  tri::Body body(int i) const;
+  // layer, edge lengths, and x, v, omega, rmass. Valid like world_triangles(i): built with
+  // them, by the thread that transforms the atom, so that a contact style's tasks read one
+  // compact record (the same values: nothing changes x, v or omega between pre_force and the
+  // contact styles) instead of five per-atom arrays that the integrator wrote on another core.
+  const tri::Body &body(int i) const { return bodies_[i]; }
   // World-frame triangles only where needed (issue 12, item 4): each source calls this for the
   // atoms of its tasks before its engine runs (never inside the parallel loop); an atom's
   // triangles are computed from x and its quaternion at most once per force evaluation
@@ -152,6 +155,8 @@ public:
 private:
   std::vector<tri::Shape> shapes_;
   std::vector<tri::TriangleSoA> world_;
+  std::vector<tri::Body> bodies_;      // per atom, with world_ (body())
+  void size_world(std::size_t n);      // world_, bodies_ and stamps for n atoms
   std::vector<long long> world_stamp_; // per atom: the evaluation its world_ is of
   long long evaluation_ = 1;           // force evaluations so far + 1 (pre_force)
   std::vector<int> pending_world_;     // scratch of ensure_world_triangles

@@ -205,7 +205,7 @@ tri::PairForceResult FixTriWall::interact(int k, double dt, bool update_history,
     }
   const tri::RigidMotion motion = tri::fit_rigid_motion(nodes.data(), node_velocities.data(), 3 * n);
 
-  const tri::Body particle = particles_->body(a);
+  const tri::Body &particle = particles_->body(a);
   tri::Body wall;
   wall.triangles = &patch;
   wall.epsilon = epsilon_;
