@@ -29,17 +29,24 @@ template <class F> bool for_each_listed_pair(const ContactBoard &board, F f) {
 
 } // namespace
 
-PairGeometry pair_geometry(const LAMMPS_NS::Atom *atom, int i, int j) {
-  double **x = atom->x, **v = atom->v, **omega = atom->omega;
-  const double *radius = atom->radius;
-  const double d[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
-  const double dv[3] = {v[j][0] - v[i][0], v[j][1] - v[i][1], v[j][2] - v[i][2]};
+PairGeometry pair_approach(const double *xi, const double *vi, double radius_i,
+                           const double *xj, const double *vj, double radius_j) {
+  const double d[3] = {xj[0] - xi[0], xj[1] - xi[1], xj[2] - xi[2]};
+  const double dv[3] = {vj[0] - vi[0], vj[1] - vi[1], vj[2] - vi[2]};
   const double r = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
   PairGeometry g;
-  g.gap = r - radius[i] - radius[j];
+  g.gap = r - radius_i - radius_j;
   // Coincident centres: no direction to approach along; count the whole relative speed.
   g.normal_speed = r > 0.0 ? -(dv[0] * d[0] + dv[1] * d[1] + dv[2] * d[2]) / r
                            : std::sqrt(dv[0] * dv[0] + dv[1] * dv[1] + dv[2] * dv[2]);
+  g.spin_speed = 0.0;
+  return g;
+}
+
+PairGeometry pair_geometry(const LAMMPS_NS::Atom *atom, int i, int j) {
+  double **x = atom->x, **v = atom->v, **omega = atom->omega;
+  const double *radius = atom->radius;
+  PairGeometry g = pair_approach(x[i], v[i], radius[i], x[j], v[j], radius[j]);
   auto norm = [](const double *w) { return std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]); };
   g.spin_speed = norm(omega[i]) * radius[i] + norm(omega[j]) * radius[j];
   return g;

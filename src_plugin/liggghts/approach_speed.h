@@ -1,9 +1,11 @@
 // How fast particles close in on each other, from the particle-pair neighbour list that the
 // contact board holds (contact_board.h: published by pair tri/gran; every pair
 // whose bounding spheres, radius = bounding radius + epsilon, are within the neighbour skin).
-// Read by fix tri/adapt_dt (to bound dt before a step) and fix tri/particles (to recognise a
-// step that carried a pair through its soft layers). Local to this rank: with `newton off`,
-// a pair that spans two ranks is seen whole on both.
+// Read by fix tri/adapt_dt (to bound dt before a step); pair tri/gran measures its own tasks
+// (the pairs within reach) with pair_geometry as they run, on the threads, and publishes the
+// fastest approaching one for fix tri/particles (to recognise a step that carried a pair
+// through its soft layers). Local to this rank: with `newton off`, a pair that spans two ranks
+// is seen whole on both.
 //
 //   gap    |x_j - x_i| - radius_i - radius_j: below 0 the soft layers may touch (m)
 //   normal speed   -(v_j - v_i) . (x_j - x_i) / |x_j - x_i|: > 0 when the centres approach
@@ -37,6 +39,10 @@ struct PairGeometry {
   double gap, normal_speed, spin_speed;
 };
 PairGeometry pair_geometry(const LAMMPS_NS::Atom *atom, int i, int j);
+// The gap and normal speed alone (spin_speed 0), from the centres' positions and velocities
+// (pair_geometry's own formulas): pair tri/gran passes its bodies' copies, already in cache.
+PairGeometry pair_approach(const double *xi, const double *vi, double radius_i,
+                           const double *xj, const double *vj, double radius_j);
 
 // The pair within reach (gap < 0) whose centres approach fastest (normal speed only: a
 // spinning pair that is being pushed apart is not approaching). Pair tri/gran offers each of

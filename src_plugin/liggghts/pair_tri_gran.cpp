@@ -172,7 +172,11 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
                   *task.touching = std::any_of(values, values + dnum_pairgran,
                                                [](double v) { return v != 0.0; });
                 }
-                task_geometry_[k] = tri_liggghts::pair_geometry(atom, task.i, task.j);
+                const tri::BodyState &si = particles_->body(task.i).state;
+                const tri::BodyState &sj = particles_->body(task.j).state;
+                task_geometry_[k] =
+                    tri_liggghts::pair_approach(si.x.data(), si.v.data(), atom->radius[task.i],
+                                                sj.x.data(), sj.v.data(), atom->radius[task.j]);
                 return r;
               });
   if (engine_.failed())
