@@ -174,6 +174,59 @@ PairForceResult resume_after_kernel(const Body &a, const Body &b, const Interact
 
 } // namespace
 
+namespace {
+
+// A body whose extents come from its pose (a radius is what bounds its world coordinates).
+bool posed(const Body &body) { return body.frame && body.pose.radius > 0.0; }
+
+// The vertices a body's extents are computed from: body frame where it has a pose.
+const TriangleSoA &extent_vertices(const Body &body) {
+  return posed(body) ? *body.frame : *body.triangles;
+}
+
+// A body's vertices along a unit world direction.
+Extent body_extent(const Body &body, const Eigen::Vector3d &n) {
+  if (posed(body))
+    return posed_extent(*body.frame, body.pose.q, body.pose.x, body.pose.radius, n);
+  return soa_extent(*body.triangles, n);
+}
+
+} // namespace
+
+bool proven_apart(const Body &a, const Body &b, const InteractionSettings &s,
+                  SeparationCache cache) {
+  const double cutoff = a.epsilon + b.epsilon;
+  const RigidPose *pose_a = &a.pose, *pose_b = b.is_wall() ? nullptr : &b.pose;
+  CandidateCache *kept = s.coherence > 0.0 ? cache.candidates : nullptr;
+  // A gap kept from an earlier step that the motion since cannot have closed (O(1); a rigid
+  // pose's triangles are not read), then the kept axis (O(vertices)).
+  if (kept && kept->proves_apart(pose_a, *a.triangles, pose_b, *b.triangles, cutoff))
+    return true;
+  if (!cache.axis || (cache.axis[0] == 0.0 && cache.axis[1] == 0.0 && cache.axis[2] == 0.0))
+    return false;
+  const Eigen::Vector3d axis(cache.axis);
+  const double length = axis.norm();
+  if (!(length > 0.0) || !std::isfinite(length) || extent_vertices(a).x.empty() ||
+      extent_vertices(b).x.empty())
+    return false;
+  const Eigen::Vector3d n = axis / length;
+  const double gap = proven_gap(body_extent(a, n), body_extent(b, n), cutoff);
+  if (!(gap >= cutoff))
+    return false;
+  if (kept && cache.update)
+    kept->keep_gap(pose_a, *a.triangles, pose_b, *b.triangles, gap);
+  return true;
+}
+
+PairForceResult apart_result(const Body &a, const Body &b, const InteractionSettings &s,
+                             double dt, double *history, InteractionScratch &scratch,
+                             ContactStats &stats) {
+  // exactly what the search returns for a pair without contacts
+  ++stats.bodies_separated;
+  scratch.points.clear();
+  return pair_contact_force(scratch.points, a.state, b.state, s.coefficients, dt, history);
+}
+
 PairForceResult body_interaction(const Body &a, const Body &b, const InteractionSettings &s,
                                  double dt, double *history, InteractionScratch &scratch,
                                  ContactStats &stats, SeparationCache cache) {
@@ -182,24 +235,9 @@ PairForceResult body_interaction(const Body &a, const Body &b, const Interaction
   const double cutoff = a.epsilon + b.epsilon;
   const RigidPose *pose_a = &a.pose, *pose_b = b.is_wall() ? nullptr : &b.pose;
   CandidateCache *kept = s.coherence > 0.0 ? cache.candidates : nullptr;
-  auto apart = [&]() { // exactly what the search below returns for a pair without contacts
-    ++stats.bodies_separated;
-    scratch.points.clear();
-    return pair_contact_force(scratch.points, a.state, b.state, s.coefficients, dt, history);
-  };
-  // A gap kept from an earlier step that the motion since cannot have closed (O(1)), then the
-  // kept axis (O(vertices)).
-  if (kept && kept->proves_apart(pose_a, *a.triangles, pose_b, *b.triangles, cutoff))
+  auto apart = [&]() { return apart_result(a, b, s, dt, history, scratch, stats); };
+  if (proven_apart(a, b, s, cache))
     return apart();
-  if (cache.axis && (cache.axis[0] != 0.0 || cache.axis[1] != 0.0 || cache.axis[2] != 0.0)) {
-    const double gap =
-        proven_gap(*a.triangles, *b.triangles, Eigen::Vector3d(cache.axis), cutoff);
-    if (gap >= cutoff) {
-      if (kept && cache.update)
-        kept->keep_gap(pose_a, *a.triangles, pose_b, *b.triangles, gap);
-      return apart();
-    }
-  }
   // Kept candidates that still cover the bodies replace the search (candidate_cache.h).
   const bool coherent =
       kept && s.distance.cull && s.distance.kernel != DistanceKernel::BatchedHybrid;

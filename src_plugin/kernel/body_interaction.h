@@ -86,6 +86,10 @@ struct Body {
   double thinnest = std::numeric_limits<double>::infinity();
   BodyState state;                        // mass <= 0 for a wall
   RigidPose pose; // a particle: x, orientation and bounding radius of `triangles`; unused for a wall
+  // A particle: its body-frame triangles (those `pose` places; pose.frame points at them), so
+  // that a kept separating axis is verified without `triangles` (separating_axis.h:
+  // posed_extent). Null: `triangles` are read (a wall patch, a body a test built by hand).
+  const TriangleSoA *frame = nullptr;
 
   bool is_wall() const { return !(state.mass > 0.0); }
 };
@@ -120,5 +124,18 @@ struct SeparationCache {
 PairForceResult body_interaction(const Body &a, const Body &b, const InteractionSettings &s,
                                  double dt, double *history, InteractionScratch &scratch,
                                  ContactStats &stats, SeparationCache cache = {});
+
+// body_interaction's first step, for a host that builds world-frame triangles only for the
+// pairs that need them: true when the kept gap (candidate_cache.h) or the kept axis proves a
+// and b apart. For bodies with a `frame` (particles) it reads their poses only, never
+// `triangles` (which may be stale); a wall patch's triangles are read. Keeps the gap as
+// body_interaction does (with cache.update). A pair proven apart takes apart_result(), exactly
+// body_interaction's result for it; any other pair goes through body_interaction, which makes
+// the same test again (it changes nothing when it fails) and goes on.
+bool proven_apart(const Body &a, const Body &b, const InteractionSettings &s,
+                  SeparationCache cache);
+PairForceResult apart_result(const Body &a, const Body &b, const InteractionSettings &s,
+                             double dt, double *history, InteractionScratch &scratch,
+                             ContactStats &stats);
 
 } // namespace tri

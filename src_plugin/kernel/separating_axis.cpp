@@ -34,13 +34,24 @@ Extent soa_extent(const TriangleSoA &t, const Eigen::Vector3d &n) {
   return {lo, hi, m};
 }
 
+Extent posed_extent(const TriangleSoA &frame, const Eigen::Quaterniond &q,
+                    const Eigen::Vector3d &x, double radius, const Eigen::Vector3d &n) {
+  const Eigen::Vector3d local = q.conjugate() * n;
+  const Extent e = soa_extent(frame, local);
+  const double shift = n.dot(x);
+  return {e.lo + shift, e.hi + shift, x.cwiseAbs().maxCoeff() + radius};
+}
+
 double proven_gap(const TriangleSoA &a, const TriangleSoA &b, const Eigen::Vector3d &axis,
                   double cutoff) {
   const double length = axis.norm();
   if (!(length > 0.0) || !std::isfinite(length) || a.x.empty() || b.x.empty())
     return -std::numeric_limits<double>::infinity();
   const Eigen::Vector3d n = axis / length;
-  const Extent ea = soa_extent(a, n), eb = soa_extent(b, n);
+  return proven_gap(soa_extent(a, n), soa_extent(b, n), cutoff);
+}
+
+double proven_gap(const Extent &ea, const Extent &eb, double cutoff) {
   const double slack = kSeparationSlackRatio * (ea.magnitude + eb.magnitude + std::fabs(cutoff));
   const double gap = eb.lo - ea.hi - slack;
   return std::isfinite(gap) ? gap : -std::numeric_limits<double>::infinity();

@@ -229,18 +229,15 @@ void FixTriParticles::pre_force(int) {
   board_.clear_tallies(); // this force evaluation's sources publish next
 }
 
-void FixTriParticles::transform_atom(int i) {
+void FixTriParticles::build_body(int i) {
   const int s = shape_index(i);
   if (s < 0)
     return;
   double **x = atom->x;
-  const Eigen::Quaterniond q = orientation(i);
-  const Eigen::Matrix3d rotation = q.toRotationMatrix();
-  tri::transform_soa(shapes_[s].soa, rotation, Eigen::Vector3d(x[i][0], x[i][1], x[i][2]),
-                     world_[i]);
   const tri::Shape &shape = shapes_[s];
   tri::Body &b = bodies_[i];
   b.triangles = &world_[i];
+  b.frame = &shape.soa;
   b.epsilon = epsilon_;
   b.longest_edge = shape.max_edge_length;
   b.min_edge = shape.min_edge_length;
@@ -250,14 +247,28 @@ void FixTriParticles::transform_atom(int i) {
   b.state.omega = Eigen::Vector3d(atom->omega[i][0], atom->omega[i][1], atom->omega[i][2]);
   b.state.mass = atom->rmass[i];
   b.pose.x = b.state.x;
-  b.pose.q = q;
+  b.pose.q = orientation(i);
   b.pose.radius = shape.bounding_radius;
   b.pose.frame = &shape.soa;
 }
 
+void FixTriParticles::transform_atom(int i) {
+  const int s = shape_index(i);
+  if (s < 0)
+    return;
+  if (body_stamp_[i] != evaluation_) { // each entry is this thread's alone
+    body_stamp_[i] = evaluation_;
+    build_body(i);
+  }
+  const tri::Body &b = bodies_[i];
+  tri::transform_soa(shapes_[s].soa, b.pose.q.toRotationMatrix(), b.pose.x, world_[i]);
+}
+
 void FixTriParticles::size_world(std::size_t n) {
-  if (world_stamp_.size() < n)
+  if (world_stamp_.size() < n) {
     world_stamp_.resize(n, 0);
+    body_stamp_.resize(n, 0);
+  }
   if (world_.size() >= n)
     return;
   world_.resize(n);
@@ -266,26 +277,36 @@ void FixTriParticles::size_world(std::size_t n) {
     bodies_[k].triangles = &world_[k];
 }
 
-void FixTriParticles::ensure_world_triangles(const int *atoms, int n, int threads) {
+template <class Work>
+void FixTriParticles::once_per_evaluation(const int *atoms, int n, int threads,
+                                          std::vector<long long> &stamp, Work work) {
   size_world(static_cast<std::size_t>(atom->nlocal + atom->nghost));
-  // Each atom once: marked here, serially, then transformed (possibly on several threads).
+  // Each atom once: marked here, serially, then processed (possibly on several threads).
   pending_world_.clear();
   for (int k = 0; k < n; ++k) {
     const int i = atoms[k];
-    if (world_stamp_[i] == evaluation_)
+    if (stamp[i] == evaluation_)
       continue;
-    world_stamp_[i] = evaluation_;
+    stamp[i] = evaluation_;
     pending_world_.push_back(i);
   }
   const int count = static_cast<int>(pending_world_.size());
   if (threads > 1 && count >= 64) {
 #pragma omp parallel for schedule(static) num_threads(threads)
     for (int k = 0; k < count; ++k)
-      transform_atom(pending_world_[k]);
+      work(pending_world_[k]);
   } else {
     for (int k = 0; k < count; ++k)
-      transform_atom(pending_world_[k]);
+      work(pending_world_[k]);
   }
+}
+
+void FixTriParticles::ensure_world_triangles(const int *atoms, int n, int threads) {
+  once_per_evaluation(atoms, n, threads, world_stamp_, [this](int i) { transform_atom(i); });
+}
+
+void FixTriParticles::ensure_bodies(const int *atoms, int n, int threads) {
+  once_per_evaluation(atoms, n, threads, body_stamp_, [this](int i) { build_body(i); });
 }
 
 void FixTriParticles::update_world_triangles(int n) {

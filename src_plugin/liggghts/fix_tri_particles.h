@@ -137,7 +137,12 @@ public:
   // them, by the thread that transforms the atom, so that a contact style's tasks read one
   // compact record (the same values: nothing changes x, v or omega between pre_force and the
   // contact styles) instead of five per-atom arrays that the integrator wrote on another core.
+  // Before that, ensure_bodies builds the record without the triangles (pose, state, frame):
+  // enough for the kernel to prove a pair apart by its kept gap or axis (tri::proven_apart).
   const tri::Body &body(int i) const { return bodies_[i]; }
+  // Body records (not the world-frame triangles) of the atoms, at most once per force
+  // evaluation; as ensure_world_triangles.
+  void ensure_bodies(const int *atoms, int n, int threads = 1);
   // World-frame triangles only where needed (issue 12, item 4): each source calls this for the
   // atoms of its tasks before its engine runs (never inside the parallel loop); an atom's
   // triangles are computed from x and its quaternion at most once per force evaluation
@@ -158,9 +163,15 @@ private:
   std::vector<tri::Body> bodies_;      // per atom, with world_ (body())
   void size_world(std::size_t n);      // world_, bodies_ and stamps for n atoms
   std::vector<long long> world_stamp_; // per atom: the evaluation its world_ is of
+  std::vector<long long> body_stamp_;  // per atom: the evaluation its Body record is of
   long long evaluation_ = 1;           // force evaluations so far + 1 (pre_force)
-  std::vector<int> pending_world_;     // scratch of ensure_world_triangles
-  void transform_atom(int i);
+  std::vector<int> pending_world_;     // scratch of ensure_world_triangles and ensure_bodies
+  void build_body(int i);              // bodies_[i] without its triangles
+  void transform_atom(int i);          // bodies_[i] (if not built yet) and world_[i]
+  // Runs `work` on each atom of `atoms` whose `stamp` is not this evaluation's, once.
+  template <class Work>
+  void once_per_evaluation(const int *atoms, int n, int threads, std::vector<long long> &stamp,
+                           Work work);
   double density_ = 0.0, epsilon_ = 0.0;
   bool epsilon_auto_ = false, epsilon_resolved_ = false;
   int check_timestep_every_ = 0; // -1 off, 0 at setup, N: also every N steps

@@ -112,27 +112,59 @@ void PairTriGran::collect_tasks() {
   candidates_.end_step();
 }
 
+PairTriGran::TaskView PairTriGran::view(const Task &task) {
+  TaskView v{task.swapped ? task.j : task.i, task.swapped ? task.i : task.j,
+             task.swapped ? -1.0 : 1.0, {0.0, 0.0, 0.0}};
+  if (task.axis)
+    for (int d = 0; d < 3; ++d)
+      v.axis[d] = v.sign * task.axis[d];
+  return v;
+}
+
 tri::PairForceResult PairTriGran::evaluate(const Task &task, tri::InteractionScratch &scratch,
                                            tri::ContactStats &stats, double dt,
                                            bool update_history) {
-  const int a = task.swapped ? task.j : task.i, b = task.swapped ? task.i : task.j;
+  TaskView v = view(task);
+  const tri::SeparationCache cache{task.axis ? v.axis : nullptr, update_history, task.candidates};
   tri::InteractionSettings s = settings_.interaction;
-  s.coefficients = materials_.get(atom->type[a], atom->type[b]);
+  s.coefficients = materials_.get(atom->type[v.a], atom->type[v.b]);
   // Stored as seen from (i, j); the kernel sees it from (a, b), and the view writes the values
   // back when it goes out of scope.
   tri::HistoryView history(task.history, task.swapped, update_history);
-  const double sign = task.swapped ? -1.0 : 1.0;
-  double axis[3] = {0.0, 0.0, 0.0};
-  if (task.axis)
-    for (int d = 0; d < 3; ++d)
-      axis[d] = sign * task.axis[d];
-  tri::SeparationCache cache{task.axis ? axis : nullptr, update_history, task.candidates};
-  const tri::PairForceResult r = tri::body_interaction(
-      particles_->body(a), particles_->body(b), s, dt, history.data(), scratch, stats, cache);
+  const tri::Body &a = particles_->body(v.a), &b = particles_->body(v.b);
+  const tri::PairForceResult r =
+      task.apart ? tri::apart_result(a, b, s, dt, history.data(), scratch, stats)
+                 : tri::body_interaction(a, b, s, dt, history.data(), scratch, stats, cache);
   if (task.axis && update_history)
     for (int d = 0; d < 3; ++d)
-      task.axis[d] = sign * axis[d];
+      task.axis[d] = v.sign * v.axis[d];
   return r;
+}
+
+void PairTriGran::mark_apart(bool update_history, int nthreads) {
+  const int n = static_cast<int>(tasks_.size());
+  auto mark = [&](int k) {
+    Task &task = tasks_[k];
+    TaskView v = view(task);
+    const tri::SeparationCache cache{task.axis ? v.axis : nullptr, update_history,
+                                     task.candidates};
+    task.apart = tri::proven_apart(particles_->body(v.a), particles_->body(v.b),
+                                   settings_.interaction, cache);
+  };
+  if (nthreads > 1 && n >= 64) {
+#pragma omp parallel for schedule(static) num_threads(nthreads)
+    for (int k = 0; k < n; ++k)
+      mark(k);
+  } else {
+    for (int k = 0; k < n; ++k)
+      mark(k);
+  }
+  world_atoms_.clear();
+  for (const Task &task : tasks_)
+    if (!task.apart) {
+      world_atoms_.push_back(task.i);
+      world_atoms_.push_back(task.j);
+    }
 }
 
 // A task's kept state (candidates, contact history, axis) is scattered over the heap; asked for
@@ -156,7 +188,9 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
 
   task_geometry_.resize(tasks_.size());
   const int nthreads = tri_liggghts::pair_loop_threads(settings_.loop, tasks_.size());
-  particles_->ensure_world_triangles(task_atoms_.data(), static_cast<int>(task_atoms_.size()),
+  particles_->ensure_bodies(task_atoms_.data(), static_cast<int>(task_atoms_.size()), nthreads);
+  mark_apart(update_history, nthreads);
+  particles_->ensure_world_triangles(world_atoms_.data(), static_cast<int>(world_atoms_.size()),
                                      nthreads);
   engine_.run(tasks_.size(), nthreads,
               [&](std::size_t k, tri::InteractionScratch &scratch, tri::ContactStats &stats) {

@@ -69,12 +69,26 @@ private:
     double *touching_values; // all of this pair style's history values, or null
     int *touching;   // LIGGGHTS keeps (migrates, restarts) the history only where this is set
     tri::CandidateCache *candidates; // the pair's kept candidates, or null
+    bool apart = false; // proven apart by its kept gap or axis, from the poses (mark_apart)
   };
   static constexpr std::size_t kPrefetchAhead = 2;
   void prefetch(const Task &t);
-  // One task through body_interaction, its history and axis as seen from (a, b).
+  // A task as the kernel sees it: (a, b) in tag order, its axis copied with the sign of (a, b).
+  struct TaskView {
+    int a, b;
+    double sign;
+    double axis[3];
+  };
+  static TaskView view(const Task &task);
+  // One task through body_interaction (or apart_result), its history and axis as seen from
+  // (a, b).
   tri::PairForceResult evaluate(const Task &task, tri::InteractionScratch &scratch,
                                 tri::ContactStats &stats, double dt, bool update_history);
+  // Sets each task's `apart` (tri::proven_apart, from the atoms' Body records without their
+  // triangles) and collects in world_atoms_ the atoms of the others: only they need
+  // world-frame triangles this step.
+  void mark_apart(bool update_history, int nthreads);
+  std::vector<int> world_atoms_;
   class FixTriParticles *particles_ = nullptr;
   int board_slot_ = -1;
   tri_liggghts::ContactSettings settings_;

@@ -13,6 +13,11 @@ spheres and the rocks back to back, phase by phase, and prints ms per step and t
            ones are landing)
   settled  --steps steps from a restart at t = 0.3 s (the settled pile)
 
+--geometry hopper measures the paper's hopper (phases free, formed: from t = 0.2 s);
+--geometry gas a granular gas (in.gas, in.gas_spheres: n^3 spinning rocks in a periodic box,
+no gravity, colliding; phase gas: --steps steps from a restart at t = 0.03 s, when every
+contact is a short, fresh one).
+
 The restart files are written once per binary (--prepare, or whenever missing: one run of the
 whole settling per configuration, minutes) under --work, so a measured phase is short. For the
 rocks it also prints the counters of compute tri/stats per step (averaged over the measured
@@ -45,6 +50,7 @@ REPO = os.path.abspath(os.path.join(HERE, "..", "..", ".."))
 DT = 2e-5
 T_FORM, T_SETTLE = 0.06, 0.3  # the pile: forming, settled
 T_HOPPER = 0.2  # the hopper: the pile has formed in the funnel (the issue's measurement)
+T_GAS = 0.03  # the gas: its warm-up, long after the first collisions of the lattice
 HOPPER = os.path.join(REPO, "examples", "hopper")
 COUNTERS = ["pairs_checked", "pairs_in_contact", "triangle_pairs_tested", "contacts_before",
             "triangle_contacts", "fallbacks"]
@@ -123,10 +129,10 @@ class Bench:
 
     def command(self, kind, n, ntri, mode, ranks, out, restart=None, steps=None, phase=None):
         a = self.a
-        stem = "in.pile" if a.geometry == "pile" else "in.hopper_phase"
+        stem = {"pile": "in.pile", "hopper": "in.hopper_phase", "gas": "in.gas"}[a.geometry]
         deck = os.path.join(HERE, stem if kind == "rocks" else stem + "_spheres")
         exe = a.tri if kind == "rocks" else a.liggghts
-        var = {"dir": HERE if a.geometry == "pile" else HOPPER, "n": n, "ntri": ntri, "mode": mode,
+        var = {"dir": HOPPER if a.geometry == "hopper" else HERE, "n": n, "ntri": ntri, "mode": mode,
                "out": out, "px": ranks}
         if steps:
             var["steps"] = steps
@@ -135,8 +141,9 @@ class Bench:
         if restart:
             var["restart"] = restart
         if mode == "settle":
-            var.update({"tform": T_FORM, "tsettle": T_SETTLE, "every": 2500} if a.geometry == "pile"
-                       else {"tform": T_HOPPER, "every": 2500})
+            var.update({"pile": {"tform": T_FORM, "tsettle": T_SETTLE},
+                        "hopper": {"tform": T_HOPPER},
+                        "gas": {"tgas": T_GAS}}[a.geometry], every=2500)
         if kind == "rocks":
             for key, name in zip(DECK_KEYS, COUNTERS):
                 var[key] = self.cols[name]
@@ -163,7 +170,7 @@ class Bench:
     def restarts(self, kind, n, ntri):
         """The folder holding forming.restart and settled.restart of (kind, n, ntri)."""
         d = os.path.join(self.a.work, f"restart_{self.a.label}", f"{self.a.geometry}_{kind}_n{n}_t{ntri}")
-        last = "settled.restart" if self.a.geometry == "pile" else "formed.restart"
+        last = {"pile": "settled.restart", "hopper": "formed.restart", "gas": "gas.restart"}[self.a.geometry]
         if (self.a.prepare and d not in self.prepared) or not os.path.exists(os.path.join(d, last)):
             self.prepared.add(d)
             os.makedirs(d, exist_ok=True)
@@ -287,7 +294,7 @@ def table(results):
           "ratio (median) | CPU ratio (median) | pairs checked | in contact | triangle pairs tested | "
           "within layer | tested/within | fallbacks | load |")
     print("|---|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|")
-    order = {"free": 0, "forming": 1, "settled": 2, "formed": 3}
+    order = {"free": 0, "forming": 1, "settled": 2, "formed": 3, "gas": 4}
     labels = []
     for r in results:
         if r["label"] not in labels:
@@ -364,9 +371,10 @@ def main():
     ap.add_argument("--liggghts", default="/usr/bin/liggghts")
     ap.add_argument("--work", default="/tmp/pile_bench")
     ap.add_argument("--label", action="append", help="name of this build's results (default speed)")
-    ap.add_argument("--geometry", choices=["pile", "hopper"], default="pile",
+    ap.add_argument("--geometry", choices=["pile", "hopper", "gas"], default="pile",
                     help="pile: in.pile (phases free forming settled); hopper: the paper's hopper, "
-                         "in.hopper_phase (phases free formed: from t = 0.2 s)")
+                         "in.hopper_phase (phases free formed: from t = 0.2 s); gas: in.gas, a "
+                         "granular gas in a periodic box (phase gas: from t = 0.03 s)")
     ap.add_argument("--n", type=int, nargs="+")
     ap.add_argument("--ntri", type=int, nargs="+", default=[20, 40])
     ap.add_argument("--phases", nargs="+")
@@ -395,8 +403,9 @@ def main():
             plot(results, a.plot)
         return
     a.label = labels[0]
-    a.n = a.n or ([8] if a.geometry == "pile" else [10])
-    a.phases = a.phases or (["free", "forming", "settled"] if a.geometry == "pile" else ["free", "formed"])
+    a.n = a.n or ([10] if a.geometry == "hopper" else [8])
+    a.phases = a.phases or {"pile": ["free", "forming", "settled"], "hopper": ["free", "formed"],
+                            "gas": ["gas"]}[a.geometry]
     Bench(a).go()
     table(Bench(a).results)
 
