@@ -236,7 +236,7 @@ PairForceResult body_interaction(const Body &a, const Body &b, const Interaction
   const RigidPose *pose_a = &a.pose, *pose_b = b.is_wall() ? nullptr : &b.pose;
   CandidateCache *kept = s.coherence > 0.0 ? cache.candidates : nullptr;
   auto apart = [&]() { return apart_result(a, b, s, dt, history, scratch, stats); };
-  if (proven_apart(a, b, s, cache))
+  if (!cache.not_apart && proven_apart(a, b, s, cache))
     return apart();
   // Kept candidates that still cover the bodies replace the search (candidate_cache.h).
   const bool coherent =

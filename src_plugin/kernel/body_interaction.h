@@ -110,6 +110,8 @@ struct SeparationCache {
   double *axis = nullptr; // null: no cache kept
   bool update = true;     // false: read only (LIGGGHTS's setup of a run)
   CandidateCache *candidates = nullptr;
+  // The host has called proven_apart for this step and it returned false: not repeated.
+  bool not_apart = false;
 };
 
 // Forces between a (a particle) and b (a particle or a wall) for one time step of length dt.
@@ -130,8 +132,8 @@ PairForceResult body_interaction(const Body &a, const Body &b, const Interaction
 // and b apart. For bodies with a `frame` (particles) it reads their poses only, never
 // `triangles` (which may be stale); a wall patch's triangles are read. Keeps the gap as
 // body_interaction does (with cache.update). A pair proven apart takes apart_result(), exactly
-// body_interaction's result for it; any other pair goes through body_interaction, which makes
-// the same test again (it changes nothing when it fails) and goes on.
+// body_interaction's result for it; any other pair goes through body_interaction with
+// cache.not_apart set (without it, the test is made again: it changes nothing when it fails).
 bool proven_apart(const Body &a, const Body &b, const InteractionSettings &s,
                   SeparationCache cache);
 PairForceResult apart_result(const Body &a, const Body &b, const InteractionSettings &s,

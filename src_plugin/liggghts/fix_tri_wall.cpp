@@ -176,20 +176,15 @@ void FixTriWall::collect_tasks() {
   candidates_.end_step();
 }
 
-tri::PairForceResult FixTriWall::interact(int k, double dt, bool update_history,
-                                          tri::InteractionScratch &scratch,
-                                          tri::ContactStats &stats) {
-  const Task &task = tasks_[k];
-  const int a = task.atom;
-  FixMeshSurface *fix_mesh = meshes_[task.mesh];
-  TriMesh *mesh = fix_mesh->triMesh();
-
+void FixTriWall::build_wall(int k, std::vector<Eigen::Vector3d> &nodes,
+                            std::vector<Eigen::Vector3d> &node_velocities) {
+  Task &task = tasks_[k];
+  TriMesh *mesh = meshes_[task.mesh]->triMesh();
   tri::TriangleSoA &patch = patches_[k];
   const int n = static_cast<int>(task.triangles.size());
   patch.resize(n);
   // Node velocities exist once a fix move/mesh moves the mesh; a static mesh has none.
   auto *vnodes = mesh->prop().getElementProperty<MultiVectorContainer<double, 3, 3>>("v");
-  std::vector<Eigen::Vector3d> &nodes = scratch.nodes, &node_velocities = scratch.node_velocities;
   nodes.resize(3 * n);
   node_velocities.assign(3 * n, Eigen::Vector3d::Zero());
   for (int t = 0; t < n; ++t)
@@ -204,27 +199,64 @@ tri::PairForceResult FixTriWall::interact(int k, double dt, bool update_history,
       }
     }
   const tri::RigidMotion motion = tri::fit_rigid_motion(nodes.data(), node_velocities.data(), 3 * n);
-
-  const tri::Body &particle = particles_->body(a);
-  tri::Body wall;
+  tri::Body &wall = task.wall;
+  wall = tri::Body{};
   wall.triangles = &patch;
   wall.epsilon = epsilon_;
   wall.longest_edge = std::numeric_limits<double>::infinity();
-  wall.min_edge = particle.min_edge;
+  wall.min_edge = particles_->body(task.atom).min_edge;
   wall.state.x = motion.centre;
   wall.state.v = motion.velocity;
   wall.state.omega = motion.omega;
   wall.state.mass = 0.0;
+}
 
+void FixTriWall::build_walls(bool update_history, int nthreads) {
+  const int n = static_cast<int>(ntasks_);
+  auto build = [&](int k, std::vector<Eigen::Vector3d> &nodes,
+                   std::vector<Eigen::Vector3d> &node_velocities) {
+    build_wall(k, nodes, node_velocities);
+    Task &task = tasks_[k];
+    const tri::SeparationCache cache{settings_.separation ? axis(task.atom, task.mesh) : nullptr,
+                                     update_history, task.candidates};
+    task.apart = tri::proven_apart(particles_->body(task.atom), task.wall,
+                                   settings_.interaction, cache);
+  };
+  if (nthreads > 1 && n >= 64) {
+#pragma omp parallel num_threads(nthreads)
+    {
+      std::vector<Eigen::Vector3d> nodes, node_velocities;
+#pragma omp for schedule(static)
+      for (int k = 0; k < n; ++k)
+        build(k, nodes, node_velocities);
+    }
+  } else {
+    for (int k = 0; k < n; ++k)
+      build(k, nodes_, node_velocities_);
+  }
+  task_atoms_.clear();
+  for (int k = 0; k < n; ++k)
+    if (!tasks_[k].apart)
+      task_atoms_.push_back(tasks_[k].atom);
+}
+
+tri::PairForceResult FixTriWall::interact(int k, double dt, bool update_history,
+                                          tri::InteractionScratch &scratch,
+                                          tri::ContactStats &stats) {
+  const Task &task = tasks_[k];
+  const int a = task.atom;
+  const tri::Body &particle = particles_->body(a);
   tri::InteractionSettings s = settings_.interaction;
-  s.coefficients = materials_.get(atom->type[a], fix_mesh->atomTypeWall());
+  s.coefficients = materials_.get(atom->type[a], meshes_[task.mesh]->atomTypeWall());
   double *stored = s.coefficients.tangential == tri::TangentialModel::no_history
                        ? nullptr
                        : history_[a] + task.mesh * tri::kHistoryDoubles;
   tri::HistoryView history(stored, false, update_history);
+  if (task.apart)
+    return tri::apart_result(particle, task.wall, s, dt, history.data(), scratch, stats);
   const tri::SeparationCache cache{settings_.separation ? axis(a, task.mesh) : nullptr,
-                                   update_history, task.candidates};
-  return tri::body_interaction(particle, wall, s, dt, history.data(), scratch, stats, cache);
+                                   update_history, task.candidates, true}; // build_walls tested
+  return tri::body_interaction(particle, task.wall, s, dt, history.data(), scratch, stats, cache);
 }
 
 void FixTriWall::compute(bool update_history) {
@@ -236,6 +268,8 @@ void FixTriWall::compute(bool update_history) {
   task_atoms_.clear();
   for (std::size_t k = 0; k < ntasks_; ++k)
     task_atoms_.push_back(tasks_[k].atom);
+  particles_->ensure_bodies(task_atoms_.data(), static_cast<int>(task_atoms_.size()), nthreads);
+  build_walls(update_history, nthreads);
   particles_->ensure_world_triangles(task_atoms_.data(), static_cast<int>(task_atoms_.size()),
                                      nthreads);
   const double dt = update->dt;

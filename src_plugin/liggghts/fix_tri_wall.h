@@ -62,6 +62,8 @@ private:
     int atom, mesh;
     std::vector<int> triangles; // mesh-local indices, ordered by global triangle id
     tri::CandidateCache *candidates = nullptr; // kept candidates of (atom, mesh), or null
+    tri::Body wall;     // the patch (patches_[k]) as the kernel sees it (build_walls)
+    bool apart = false; // proven apart by its kept gap or axis (build_walls)
   };
   std::vector<class FixMeshSurface *> meshes_;
   std::vector<std::string> mesh_ids_;
@@ -80,6 +82,7 @@ private:
   std::size_t ntasks_ = 0;
   std::vector<std::vector<std::pair<int, int>>> near_;
   std::vector<tri::TriangleSoA> patches_;
+  std::vector<Eigen::Vector3d> nodes_, node_velocities_; // build_wall's scratch, one thread
   tri::InteractionEngine engine_;
   tri_liggghts::CandidateStore candidates_;
   int board_slot_ = -1;
@@ -87,6 +90,12 @@ private:
 
   void compute(bool update_history);
   void collect_tasks();
+  // Each task's wall patch and Body; then whether its kept gap or axis proves it apart from the
+  // particle's pose (tri::proven_apart: no world-frame particle triangles needed). Fills
+  // task_atoms_ with the atoms of the other tasks.
+  void build_walls(bool update_history, int nthreads);
+  void build_wall(int k, std::vector<Eigen::Vector3d> &nodes,
+                  std::vector<Eigen::Vector3d> &node_velocities);
   tri::PairForceResult interact(int k, double dt, bool update_history,
                                 tri::InteractionScratch &scratch, tri::ContactStats &stats);
 };

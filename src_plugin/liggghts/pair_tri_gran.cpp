@@ -125,7 +125,9 @@ tri::PairForceResult PairTriGran::evaluate(const Task &task, tri::InteractionScr
                                            tri::ContactStats &stats, double dt,
                                            bool update_history) {
   TaskView v = view(task);
-  const tri::SeparationCache cache{task.axis ? v.axis : nullptr, update_history, task.candidates};
+  // mark_apart has tested the kept gap and axis.
+  const tri::SeparationCache cache{task.axis ? v.axis : nullptr, update_history, task.candidates,
+                                   true};
   tri::InteractionSettings s = settings_.interaction;
   s.coefficients = materials_.get(atom->type[v.a], atom->type[v.b]);
   // Stored as seen from (i, j); the kernel sees it from (a, b), and the view writes the values

@@ -259,7 +259,8 @@ TEST(SeparatingAxis, PosesAloneProveWhatTheWorldTrianglesProve) {
       } else {
         pa.triangles = &wa;
         pb.triangles = &wb;
-        got = body_interaction(pa, pb, s, dt, h_got, scratch_got, st_got, cache);
+        got = body_interaction(pa, pb, s, dt, h_got, scratch_got, st_got,
+                               SeparationCache{axis_got, true, &kept_got, true});
       }
       const std::string what = "pair " + std::to_string(pair) + " step " + std::to_string(step);
       ASSERT_NO_FATAL_FAILURE(expect_bitwise(ref, got, what));
