@@ -214,7 +214,7 @@ bool proven_apart(const Body &a, const Body &b, const InteractionSettings &s,
   if (!(gap >= cutoff))
     return false;
   if (kept && cache.update)
-    kept->keep_gap(pose_a, *a.triangles, pose_b, *b.triangles, gap);
+    kept->keep_gap(pose_a, *a.triangles, pose_b, *b.triangles, gap, n);
   return true;
 }
 
@@ -307,9 +307,11 @@ PairForceResult after_kernel(const Body &a, const Body &b, const InteractionSett
                                      : Eigen::Vector3d::Zero();
     for (int d = 0; d < 3; ++d)
       cache.axis[d] = axis[d];
-    if (kept && axis != Eigen::Vector3d::Zero())
+    if (kept && axis != Eigen::Vector3d::Zero()) {
+      const Eigen::Vector3d n = axis / axis.norm(); // the direction proven_gap projects on
       kept->keep_gap(pose_a, *a.triangles, pose_b, *b.triangles,
-                     proven_gap(*a.triangles, *b.triangles, axis, cutoff));
+                     proven_gap(*a.triangles, *b.triangles, axis, cutoff), n);
+    }
   }
   if (scratch.triangle_contacts.empty()) { // the reduction of nothing needs no parameters
     scratch.points.clear();

@@ -82,22 +82,60 @@ bool CandidateCache::worth_keeping() {
   return true;
 }
 
+double CandidateCache::advance(const Pose &then, const RigidPose *rigid, const TriangleSoA &t,
+                               const Eigen::Vector3d &n, double &magnitude) {
+  constexpr double kUnbounded = std::numeric_limits<double>::infinity();
+  if (then.rigid != (rigid != nullptr))
+    return kUnbounded;
+  if (rigid) {
+    const RigidPose &p0 = then.pose;
+    if (!(rigid->radius > 0.0) || rigid->radius != p0.radius || rigid->frame != p0.frame)
+      return kUnbounded;
+    const Eigen::Quaterniond turn = rigid->q * p0.q.conjugate();
+    magnitude = std::max(rigid->x.cwiseAbs().maxCoeff(), p0.x.cwiseAbs().maxCoeff()) +
+                rigid->radius;
+    return n.dot(rigid->x - p0.x) + 2.0 * turn.vec().norm() * rigid->radius;
+  }
+  const std::size_t count = t.x.size();
+  if (then.vertices.size() != 3 * count)
+    return kUnbounded;
+  double most = -kUnbounded, m = 0.0, d2 = 0.0;
+  for (std::size_t i = 0; i < count; ++i) {
+    const double dx = t.x[i] - then.vertices[3 * i], dy = t.y[i] - then.vertices[3 * i + 1],
+                 dz = t.z[i] - then.vertices[3 * i + 2];
+    most = std::max(most, n.x() * dx + n.y() * dy + n.z() * dz);
+    d2 = std::max(d2, dx * dx + dy * dy + dz * dz);
+    m = std::max(m, std::max(std::fabs(t.x[i]), std::max(std::fabs(t.y[i]), std::fabs(t.z[i]))));
+  }
+  magnitude = m + std::sqrt(d2);
+  return count ? most : kUnbounded;
+}
+
 bool CandidateCache::proves_apart(const RigidPose *pose_a, const TriangleSoA &a,
                                   const RigidPose *pose_b, const TriangleSoA &b,
                                   double cutoff) const {
-  if (!gap_valid_ || !(gap_ >= cutoff))
+  if (!gap_valid_)
     return false;
-  return gap_ - moved(gap_a_, pose_a, a, gap_b_, pose_b, b, gap_) >= cutoff;
+  if (gap_axis_ == Eigen::Vector3d::Zero()) // the gap can only have shrunk
+    return gap_ >= cutoff && gap_ - moved(gap_a_, pose_a, a, gap_b_, pose_b, b, gap_) >= cutoff;
+  // a's vertices advancing along n close the gap, b's along -n.
+  double magnitude_a = 0.0, magnitude_b = 0.0;
+  const double closing = advance(gap_a_, pose_a, a, gap_axis_, magnitude_a) +
+                         advance(gap_b_, pose_b, b, -gap_axis_, magnitude_b);
+  const double slack = kSeparationSlackRatio * (magnitude_a + magnitude_b + std::fabs(gap_));
+  return gap_ - closing - slack >= cutoff; // false for NaN or an unbounded motion
 }
 
 void CandidateCache::keep_gap(const RigidPose *pose_a, const TriangleSoA &a,
-                              const RigidPose *pose_b, const TriangleSoA &b, double gap) {
-  gap_valid_ = std::isfinite(gap);
+                              const RigidPose *pose_b, const TriangleSoA &b, double gap,
+                              const Eigen::Vector3d &axis) {
+  gap_valid_ = std::isfinite(gap) && axis.allFinite();
   if (!gap_valid_)
     return;
   record(pose_a, a, gap_a_);
   record(pose_b, b, gap_b_);
   gap_ = gap;
+  gap_axis_ = axis;
 }
 
 void CandidateCache::keep(const RigidPose *pose_a, const TriangleSoA &a, const RigidPose *pose_b,

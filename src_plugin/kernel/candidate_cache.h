@@ -25,10 +25,16 @@
 // the coordinates; the slack, kSeparationSlackRatio (separating_axis.h) times the magnitudes,
 // is orders of magnitude above them.
 //
-// The same bound keeps a proof of separation: a gap g proven between the bodies (along a
-// separating axis, separating_axis.h) shrinks by at most D_a + D_b, so while
-// g - D_a - D_b - slack >= cutoff the bodies are still apart, in O(1) for particles, without
-// projecting their vertices again.
+// The same bound keeps a proof of separation: a gap g proven between the bodies along a unit
+// separating axis n (from a towards b, separating_axis.h) is g = min_b n.q - max_a n.p. A
+// vertex of a rigid particle moves by (x - x0) + (R - R0) p, so its projection on n changes by
+// n.(x - x0) plus at most 2 sin(theta / 2) r: the translation counts only along the axis, and
+// with its sign (a pair drifting apart keeps its proof). A wall patch's vertices are compared
+// one by one, projected on n. So while
+//   g - [n.(x_a - x_a0) + rot_a] - [-n.(x_b - x_b0) + rot_b] - slack >= cutoff
+// the bodies are still apart, in O(1) for particles, without projecting their vertices again
+// (a gap kept without its axis falls back to g - D_a - D_b). In a granular gas, where bodies
+// pass each other at speed, the proof lasts several times longer than with D_a + D_b.
 //
 // The kept list is the host's (one per body pair, pair tri/gran and fix tri/wall); a list may
 // be dropped at any time (neighbour-list rebuild, migration, restart): the next step searches
@@ -82,9 +88,11 @@ public:
   // True when a kept gap still proves every pair at least `cutoff` apart.
   bool proves_apart(const RigidPose *pose_a, const TriangleSoA &a, const RigidPose *pose_b,
                     const TriangleSoA &b, double cutoff) const;
-  // Keeps `gap` (m), proven between the bodies now, and their poses.
+  // Keeps `gap` (m), proven between the bodies now along `axis` (unit, from a towards b; zero:
+  // not known, the motion is bounded in every direction), and their poses.
   void keep_gap(const RigidPose *pose_a, const TriangleSoA &a, const RigidPose *pose_b,
-                const TriangleSoA &b, double gap);
+                const TriangleSoA &b, double gap,
+                const Eigen::Vector3d &axis = Eigen::Vector3d::Zero());
 
   void clear() { valid_ = false; }
   // Asks for this entry's cache lines: a host's entries lie wherever its map put them, and a
@@ -115,6 +123,11 @@ private:
   static double moved(const Pose &a, const RigidPose *pose_a, const TriangleSoA &ta,
                       const Pose &b, const RigidPose *pose_b, const TriangleSoA &tb,
                       double length);
+  // How far the body's vertices can have advanced along unit n since `then` (the largest
+  // increase of n.p over its vertices; negative: all receded), plus its magnitude M;
+  // infinity if it cannot be bounded.
+  static double advance(const Pose &then, const RigidPose *rigid, const TriangleSoA &t,
+                        const Eigen::Vector3d &n, double &magnitude);
 
   static constexpr int kPausedSearches = 8;
   bool valid_ = false; // candidates kept
@@ -124,6 +137,7 @@ private:
   Pose a_, b_;
   bool gap_valid_ = false; // a gap kept
   double gap_ = 0.0;
+  Eigen::Vector3d gap_axis_ = Eigen::Vector3d::Zero(); // unit, a towards b; zero: not known
   Pose gap_a_, gap_b_;
   std::vector<TrianglePairIndex> pairs_;
 };

@@ -121,6 +121,34 @@ TEST(CandidateCache, WallPatchByItsVerticesAndKeptGaps) {
   EXPECT_TRUE(cache.proves_apart(&q, particle, nullptr, patch, 2e-4));
   q.x = Vector3d(0, 0, -3.1e-4);
   EXPECT_FALSE(cache.proves_apart(&q, particle, nullptr, patch, 2e-4));
+
+  // The same gap kept with its axis (particle towards wall: -z): only motion along the axis
+  // closes it, with its sign; a turn by theta counts as 2 sin(theta / 2) r.
+  cache.keep_gap(&p, particle, nullptr, patch, 5e-4, Vector3d(0, 0, -1));
+  q = p;
+  q.x = Vector3d(1e-3, -2e-3, 0); // sideways, far more than the gap
+  EXPECT_TRUE(cache.proves_apart(&q, particle, nullptr, patch, 2e-4));
+  q.x = Vector3d(1e-3, 0, -2.9e-4);
+  EXPECT_TRUE(cache.proves_apart(&q, particle, nullptr, patch, 2e-4));
+  q.x = Vector3d(0, 0, -3.1e-4);
+  EXPECT_FALSE(cache.proves_apart(&q, particle, nullptr, patch, 2e-4));
+  q.x = Vector3d(0, 0, 1e-3); // receding: the gap grows
+  EXPECT_TRUE(cache.proves_apart(&q, particle, nullptr, patch, 1.4e-3));
+  EXPECT_FALSE(cache.proves_apart(&q, particle, nullptr, patch, 1.6e-3));
+  const double turn_ok = 2.0 * std::asin(2.9e-4 / (2.0 * p.radius)),
+               turn_far = 2.0 * std::asin(3.1e-4 / (2.0 * p.radius));
+  q.x = p.x;
+  q.q = Eigen::Quaterniond(Eigen::AngleAxisd(turn_ok, Vector3d(1, 0, 0)));
+  EXPECT_TRUE(cache.proves_apart(&q, particle, nullptr, patch, 2e-4));
+  q.q = Eigen::Quaterniond(Eigen::AngleAxisd(turn_far, Vector3d(1, 0, 0)));
+  EXPECT_FALSE(cache.proves_apart(&q, particle, nullptr, patch, 2e-4));
+  TriangleSoA raised = patch; // a wall vertex rising towards the particle closes the gap
+  raised.set_vertex(0, 2, Vector3d(0.0, 0.01, -0.003 + 2.9e-4));
+  EXPECT_TRUE(cache.proves_apart(&p, particle, nullptr, raised, 2e-4));
+  raised.set_vertex(0, 2, Vector3d(0.0, 0.01, -0.003 + 3.1e-4));
+  EXPECT_FALSE(cache.proves_apart(&p, particle, nullptr, raised, 2e-4));
+  raised.set_vertex(0, 2, Vector3d(0.005, 0.01, -0.003)); // sliding within its plane
+  EXPECT_TRUE(cache.proves_apart(&p, particle, nullptr, raised, 4.9e-4));
 }
 
 // Two rocks spinning and sliding past each other through contact (and intersecting) and apart,
