@@ -193,6 +193,15 @@ Extent body_extent(const Body &body, const Eigen::Vector3d &n) {
 
 } // namespace
 
+double candidate_reach(const Body &a, const Body &b, double coherence, double cutoff,
+                       double dt) {
+  const double rate = (b.state.v - a.state.v).norm() + a.state.omega.norm() * a.pose.radius +
+                      b.state.omega.norm() * b.pose.radius;
+  const double motion = kCandidateSteps * rate * dt;
+  const double reach = std::max(coherence * cutoff, std::min(motion, kCandidateReachCap * cutoff));
+  return std::isfinite(reach) ? reach : coherence * cutoff;
+}
+
 bool proven_apart(const Body &a, const Body &b, const InteractionSettings &s,
                   SeparationCache cache) {
   const double cutoff = a.epsilon + b.epsilon;
@@ -258,7 +267,7 @@ PairForceResult body_interaction(const Body &a, const Body &b, const Interaction
                               scratch.triangle_contacts, stats, scratch.distance);
   } else {
     const bool keep = coherent && cache.update && cache.candidates->worth_keeping();
-    const double reach = keep ? s.coherence * cutoff : 0.0;
+    const double reach = keep ? candidate_reach(a, b, s.coherence, cutoff, dt) : 0.0;
     const double margin = cutoff + reach;
     // A wall patch: its triangles whose plane a lies beyond (either side) cannot touch a; if
     // that is all of them, a touches nothing, also where no single axis separates a from the

@@ -21,8 +21,9 @@ struct InteractionSettings {
   ContactOptions distance;                     // kernel, culling, threads inside the pair
   ReductionMethod reduction = ReductionMethod::clusters;
   ContactCoefficients coefficients;            // per type pair, filled by the host
-  // Kept candidates (candidate_cache.h): searched with a margin of (1 + coherence) x the
-  // cutoff and reused while the bodies move less than coherence x the cutoff; 0: none kept.
+  // Kept candidates (candidate_cache.h): searched with a margin of the cutoff plus a reach of
+  // coherence x the cutoff (more for fast bodies: candidate_reach) and reused while the bodies
+  // move less than the reach; 0: none kept.
   // Not with the batched kernel, whose result for a pair depends on its batch.
   double coherence = 0.05;
 };
@@ -136,6 +137,15 @@ PairForceResult body_interaction(const Body &a, const Body &b, const Interaction
 // cache.not_apart set (without it, the test is made again: it changes nothing when it fails).
 bool proven_apart(const Body &a, const Body &b, const InteractionSettings &s,
                   SeparationCache cache);
+
+// The reach (m) a search keeps its candidates with: coherence x cutoff, or, for bodies that
+// move faster, what their relative motion covers in kCandidateSteps steps (translation plus
+// each spin times its radius, a wall's radius 0), at most kCandidateReachCap cutoffs. A choice
+// of cost only (candidate_cache.h proves each reuse from the actual motion): too small, and
+// colliding bodies search afresh every step (a granular gas); too large, and a list holds
+// pairs that never come close.
+constexpr double kCandidateSteps = 4.0, kCandidateReachCap = 1.0;
+double candidate_reach(const Body &a, const Body &b, double coherence, double cutoff, double dt);
 PairForceResult apart_result(const Body &a, const Body &b, const InteractionSettings &s,
                              double dt, double *history, InteractionScratch &scratch,
                              ContactStats &stats);
