@@ -20,10 +20,9 @@ std::size_t CandidateStore::bytes() const {
 }
 
 // LIGGGHTS tags are positive and below 2^31 (tagint is int in 3.8), so 32 bits each.
-std::uint64_t CandidateStore::pair_key(long long tag_i, long long tag_j) {
-  const auto lo = static_cast<std::uint64_t>(std::min(tag_i, tag_j));
-  const auto hi = static_cast<std::uint64_t>(std::max(tag_i, tag_j));
-  return (lo << 32) | (hi & 0xffffffffu);
+std::uint64_t CandidateStore::pair_key(long long tag_owner, long long tag_other) {
+  return (static_cast<std::uint64_t>(tag_owner) << 32) |
+         (static_cast<std::uint64_t>(tag_other) & 0xffffffffu);
 }
 
 std::uint64_t CandidateStore::wall_key(long long tag, int mesh) {

@@ -7,7 +7,9 @@
 //
 // Use: begin_step(); for each task, serially, entry(slot, key) (pointers stay valid while the
 // map grows: std::unordered_map never moves its elements); evaluate the tasks (threads may use
-// their own entries); end_step() drops what was not asked for.
+// their own entries); end_step() drops what was not asked for. An entry is handed to one task
+// a step: a key asked for twice in one step (two images of one pair in a small periodic box)
+// gets null the second time, so no two tasks, on two threads, ever write one entry.
 //
 // `slot` is the task's index in the step's task list. Between neighbour-list rebuilds the list
 // is the same every step, so the entry a slot named last step is almost always the one it
@@ -42,15 +44,19 @@ public:
     if (next_hints_.size() <= slot)
       next_hints_.resize(slot + 1, nullptr);
     next_hints_[slot] = e;
-    touched_ += e->step != step_;
+    if (e->step == step_)
+      return nullptr; // already another task's this step
+    ++touched_;
     e->step = step_;
     return &e->cache;
   }
   void end_step();
   std::size_t bytes() const;
 
-  // Keys: the two tags in either order give the same key; a tag and a mesh index.
-  static std::uint64_t pair_key(long long tag_i, long long tag_j);
+  // Keys: the tag of the atom whose neighbour list holds the pair, then the other's (with
+  // newton off, a pair across a periodic boundary is in both atoms' lists, with the other as an
+  // image: two tasks, two keys); a tag and a mesh index.
+  static std::uint64_t pair_key(long long tag_owner, long long tag_other);
   static std::uint64_t wall_key(long long tag, int mesh);
 
 private:

@@ -320,16 +320,20 @@ def plot(results, path):
     import matplotlib.pyplot as plt
     rows = summarise(results)
     labels = sorted({k[0] for k in rows}, key=lambda l: [r["label"] for r in results].index(l))
-    phases = ["free", "forming", "settled"]
-    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
+    phases = ["free", "forming", "settled", "gas"]  # gas: --geometry gas
+
+    def geometry(phase):
+        return "gas" if phase == "gas" else "pile"
+
+    fig, axes = plt.subplots(1, 2, figsize=(12, 4.2))
     width = 0.8 / max(1, 2 * len(labels))
     keys = [(ntri, p) for ntri in (20, 40) for p in phases]
     for li, label in enumerate(labels):
         for ti, ntri in enumerate((20, 40)):
             vals = []
             for p in phases:
-                e = next((rows[k] for k in rows if k[0] == label and k[1] == "pile" and k[3] == ntri
-                          and k[4] == p and k[5] == 1 and k[6] == 1), None)
+                e = next((rows[k] for k in rows if k[0] == label and k[1] == geometry(p)
+                          and k[3] == ntri and k[4] == p and k[5] == 1 and k[6] == 1), None)
                 vals.append(median(e["ratios"]) if e and e["ratios"] else 0.0)
             xs = [i + (2 * li + ti) * width for i in range(len(phases))]
             axes[0].bar(xs, vals, width, label=f"{label}, {ntri} triangles")
@@ -347,8 +351,8 @@ def plot(results, path):
         for ti, ntri in enumerate((20, 40)):
             vals = []
             for p in phases:
-                e = next((rows[k] for k in rows if k[0] == label and k[1] == "pile" and k[3] == ntri
-                          and k[4] == p and k[5] == 1 and k[6] == 1), None)
+                e = next((rows[k] for k in rows if k[0] == label and k[1] == geometry(p)
+                          and k[3] == ntri and k[4] == p and k[5] == 1 and k[6] == 1), None)
                 c = e["counters"] if e else None
                 vals.append(c["triangle_pairs_tested"] / c["triangle_contacts"]
                             if c and c["triangle_contacts"] else 0.0)
@@ -370,7 +374,9 @@ def main():
         "LIGGGHTS_TRI", os.path.join(REPO, "build", "src_plugin", "driver", "liggghts-tri")))
     ap.add_argument("--liggghts", default="/usr/bin/liggghts")
     ap.add_argument("--work", default="/tmp/pile_bench")
-    ap.add_argument("--label", action="append", help="name of this build's results (default speed)")
+    ap.add_argument("--label", action="append",
+                    help="name of this build's results (default speed); with --table or --plot "
+                         "also NAME=LABEL or NAME=FILE.json, to show other results as NAME")
     ap.add_argument("--geometry", choices=["pile", "hopper", "gas"], default="pile",
                     help="pile: in.pile (phases free forming settled); hopper: the paper's hopper, "
                          "in.hopper_phase (phases free formed: from t = 0.2 s); gas: in.gas, a "
@@ -396,7 +402,14 @@ def main():
     if a.table or a.plot:
         results = []
         for label in labels:
-            results += json.load(open(os.path.join(a.work, f"results_{label}.json")))
+            # NAME=SOURCE: the results of label SOURCE (or of the file SOURCE.json) shown as
+            # NAME; several sources with one NAME are merged (a gas run beside a pile run).
+            name, _, source = label.partition("=")
+            path = source if source.endswith(".json") else os.path.join(
+                a.work, f"results_{source or name}.json")
+            for r in json.load(open(path)):
+                r["label"] = name
+                results.append(r)
         if a.table:
             table(results)
         if a.plot:
