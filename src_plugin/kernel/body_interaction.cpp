@@ -204,6 +204,10 @@ double candidate_reach(const Body &a, const Body &b, double coherence, double cu
 
 bool proven_apart(const Body &a, const Body &b, const InteractionSettings &s,
                   SeparationCache cache) {
+  // Only a pair with a kept axis can be proven apart: a gap is kept beside an axis and dropped
+  // with it (after_kernel), so most pairs in contact stop here, at the host's history values.
+  if (!cache.axis || (cache.axis[0] == 0.0 && cache.axis[1] == 0.0 && cache.axis[2] == 0.0))
+    return false;
   const double cutoff = a.epsilon + b.epsilon;
   const RigidPose *pose_a = &a.pose, *pose_b = b.is_wall() ? nullptr : &b.pose;
   CandidateCache *kept = s.coherence > 0.0 ? cache.candidates : nullptr;
@@ -211,8 +215,6 @@ bool proven_apart(const Body &a, const Body &b, const InteractionSettings &s,
   // pose's triangles are not read), then the kept axis (O(vertices)).
   if (kept && kept->proves_apart(pose_a, *a.triangles, pose_b, *b.triangles, cutoff))
     return true;
-  if (!cache.axis || (cache.axis[0] == 0.0 && cache.axis[1] == 0.0 && cache.axis[2] == 0.0))
-    return false;
   const Eigen::Vector3d axis(cache.axis);
   const double length = axis.norm();
   if (!(length > 0.0) || !std::isfinite(length) || extent_vertices(a).x.empty() ||
@@ -316,6 +318,8 @@ PairForceResult after_kernel(const Body &a, const Body &b, const InteractionSett
                                      : Eigen::Vector3d::Zero();
     for (int d = 0; d < 3; ++d)
       cache.axis[d] = axis[d];
+    if (kept && axis == Eigen::Vector3d::Zero())
+      kept->clear_gap();
     if (kept && axis != Eigen::Vector3d::Zero()) {
       const Eigen::Vector3d n = axis / axis.norm(); // the direction proven_gap projects on
       kept->keep_gap(pose_a, *a.triangles, pose_b, *b.triangles,

@@ -95,6 +95,10 @@ public:
                 const Eigen::Vector3d &axis = Eigen::Vector3d::Zero());
 
   void clear() { valid_ = false; }
+  // Drops the kept gap (its pair has lost its axis: body_interaction keeps a gap only beside an
+  // axis, so a pair without one is never proven apart by a stale gap, and the hosts skip
+  // such pairs without reading this entry).
+  void clear_gap() { gap_valid_ = false; }
   // Asks for this entry's cache lines: a host's entries lie wherever its map put them, and a
   // task that waits for them (the poses compared first) stalls on every lookup.
   void prefetch() const {

@@ -146,6 +146,8 @@ tri::PairForceResult PairTriGran::evaluate(const Task &task, tri::InteractionScr
 void PairTriGran::mark_apart(bool update_history, int nthreads) {
   const int n = static_cast<int>(tasks_.size());
   auto mark = [&](int k) {
+    if (k + static_cast<int>(kPrefetchAhead) < n)
+      prefetch(tasks_[k + kPrefetchAhead]);
     Task &task = tasks_[k];
     TaskView v = view(task);
     const tri::SeparationCache cache{task.axis ? v.axis : nullptr, update_history,
