@@ -26,7 +26,7 @@ void CandidateCache::record(const RigidPose *rigid, const TriangleSoA &t, Pose &
 }
 
 double CandidateCache::displacement(const Pose &then, const RigidPose *rigid, const TriangleSoA &t,
-                                    double &magnitude) {
+                                    double &magnitude, const Eigen::Vector3d *along) {
   constexpr double kUnbounded = std::numeric_limits<double>::infinity();
   if (then.rigid != (rigid != nullptr))
     return kUnbounded;
@@ -38,20 +38,23 @@ double CandidateCache::displacement(const Pose &then, const RigidPose *rigid, co
     const Eigen::Quaterniond turn = rigid->q * p0.q.conjugate();
     magnitude = std::max(rigid->x.cwiseAbs().maxCoeff(), p0.x.cwiseAbs().maxCoeff()) +
                 rigid->radius;
-    return (rigid->x - p0.x).norm() + 2.0 * turn.vec().norm() * rigid->radius;
+    const Eigen::Vector3d shift = rigid->x - p0.x;
+    return (along ? along->dot(shift) : shift.norm()) + 2.0 * turn.vec().norm() * rigid->radius;
   }
   const std::size_t n = t.x.size();
-  if (then.vertices.size() != 3 * n)
+  if (then.vertices.size() != 3 * n || (along && n == 0))
     return kUnbounded;
-  double d2 = 0.0, m = 0.0;
+  double d2 = 0.0, m = 0.0, most = -kUnbounded;
   for (std::size_t i = 0; i < n; ++i) {
     const double dx = t.x[i] - then.vertices[3 * i], dy = t.y[i] - then.vertices[3 * i + 1],
                  dz = t.z[i] - then.vertices[3 * i + 2];
     d2 = std::max(d2, dx * dx + dy * dy + dz * dz);
+    if (along)
+      most = std::max(most, along->x() * dx + along->y() * dy + along->z() * dz);
     m = std::max(m, std::max(std::fabs(t.x[i]), std::max(std::fabs(t.y[i]), std::fabs(t.z[i]))));
   }
   magnitude = m + std::sqrt(d2);
-  return std::sqrt(d2);
+  return along ? most : std::sqrt(d2);
 }
 
 double CandidateCache::moved(const Pose &a, const RigidPose *pose_a, const TriangleSoA &ta,
@@ -82,35 +85,6 @@ bool CandidateCache::worth_keeping() {
   return true;
 }
 
-double CandidateCache::advance(const Pose &then, const RigidPose *rigid, const TriangleSoA &t,
-                               const Eigen::Vector3d &n, double &magnitude) {
-  constexpr double kUnbounded = std::numeric_limits<double>::infinity();
-  if (then.rigid != (rigid != nullptr))
-    return kUnbounded;
-  if (rigid) {
-    const RigidPose &p0 = then.pose;
-    if (!(rigid->radius > 0.0) || rigid->radius != p0.radius || rigid->frame != p0.frame)
-      return kUnbounded;
-    const Eigen::Quaterniond turn = rigid->q * p0.q.conjugate();
-    magnitude = std::max(rigid->x.cwiseAbs().maxCoeff(), p0.x.cwiseAbs().maxCoeff()) +
-                rigid->radius;
-    return n.dot(rigid->x - p0.x) + 2.0 * turn.vec().norm() * rigid->radius;
-  }
-  const std::size_t count = t.x.size();
-  if (then.vertices.size() != 3 * count)
-    return kUnbounded;
-  double most = -kUnbounded, m = 0.0, d2 = 0.0;
-  for (std::size_t i = 0; i < count; ++i) {
-    const double dx = t.x[i] - then.vertices[3 * i], dy = t.y[i] - then.vertices[3 * i + 1],
-                 dz = t.z[i] - then.vertices[3 * i + 2];
-    most = std::max(most, n.x() * dx + n.y() * dy + n.z() * dz);
-    d2 = std::max(d2, dx * dx + dy * dy + dz * dz);
-    m = std::max(m, std::max(std::fabs(t.x[i]), std::max(std::fabs(t.y[i]), std::fabs(t.z[i]))));
-  }
-  magnitude = m + std::sqrt(d2);
-  return count ? most : kUnbounded;
-}
-
 bool CandidateCache::proves_apart(const RigidPose *pose_a, const TriangleSoA &a,
                                   const RigidPose *pose_b, const TriangleSoA &b,
                                   double cutoff) const {
@@ -120,8 +94,9 @@ bool CandidateCache::proves_apart(const RigidPose *pose_a, const TriangleSoA &a,
     return gap_ >= cutoff && gap_ - moved(gap_a_, pose_a, a, gap_b_, pose_b, b, gap_) >= cutoff;
   // a's vertices advancing along n close the gap, b's along -n.
   double magnitude_a = 0.0, magnitude_b = 0.0;
-  const double closing = advance(gap_a_, pose_a, a, gap_axis_, magnitude_a) +
-                         advance(gap_b_, pose_b, b, -gap_axis_, magnitude_b);
+  const Eigen::Vector3d back = -gap_axis_;
+  const double closing = displacement(gap_a_, pose_a, a, magnitude_a, &gap_axis_) +
+                         displacement(gap_b_, pose_b, b, magnitude_b, &back);
   const double slack = kSeparationSlackRatio * (magnitude_a + magnitude_b + std::fabs(gap_));
   return gap_ - closing - slack >= cutoff; // false for NaN or an unbounded motion
 }

@@ -119,19 +119,16 @@ private:
   };
   static void record(const RigidPose *rigid, const TriangleSoA &t, Pose &out);
   // The bound D of the header on the body's vertex displacements, plus its magnitude M (the
-  // largest coordinate, for the rounding slack); D = infinity if it cannot be bounded.
+  // largest coordinate, for the rounding slack); D = infinity if it cannot be bounded. With
+  // `along` (unit): how far the vertices can have advanced along it instead (the largest
+  // increase of along . p; negative: all receded).
   static double displacement(const Pose &then, const RigidPose *rigid, const TriangleSoA &t,
-                             double &magnitude);
+                             double &magnitude, const Eigen::Vector3d *along = nullptr);
 
   // The motion of both bodies since the poses a, b were recorded, plus the rounding slack.
   static double moved(const Pose &a, const RigidPose *pose_a, const TriangleSoA &ta,
                       const Pose &b, const RigidPose *pose_b, const TriangleSoA &tb,
                       double length);
-  // How far the body's vertices can have advanced along unit n since `then` (the largest
-  // increase of n.p over its vertices; negative: all receded), plus its magnitude M;
-  // infinity if it cannot be bounded.
-  static double advance(const Pose &then, const RigidPose *rigid, const TriangleSoA &t,
-                        const Eigen::Vector3d &n, double &magnitude);
 
   static constexpr int kPausedSearches = 8;
   bool valid_ = false; // candidates kept
