@@ -44,8 +44,7 @@ std::size_t InteractionScratch::bytes() const {
          points.capacity() * sizeof(ContactPoint) +
          r.raw.capacity() * sizeof(ReductionWorkspace::Raw) +
          r.polygons.capacity() * sizeof(ContactPolygon) +
-         (r.points.capacity() + nodes.capacity() + node_velocities.capacity()) *
-             sizeof(Eigen::Vector3d) +
+         r.points.capacity() * sizeof(Eigen::Vector3d) +
          ints * sizeof(int) + wall_apart.capacity() +
          4 * wall_planes.n_x.capacity() * sizeof(double) + jobs.capacity() * sizeof(HybridJob) +
          job_offsets.capacity() * sizeof(std::size_t) +

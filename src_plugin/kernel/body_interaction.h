@@ -37,8 +37,6 @@ struct alignas(64) InteractionScratch {
   std::vector<ContactPoint> points;
   ReductionWorkspace reduction;
   DepthScratch depth;
-  // A wall patch's corners and their velocities, gathered by the host (fix tri/wall).
-  std::vector<Eigen::Vector3d> nodes, node_velocities;
   // Wall triangles proven apart from the particle by their own planes, and those planes.
   std::vector<std::uint8_t> wall_apart;
   TrianglePlanes wall_planes;
@@ -137,6 +135,9 @@ PairForceResult body_interaction(const Body &a, const Body &b, const Interaction
 // cache.not_apart set (without it, the test is made again: it changes nothing when it fails).
 bool proven_apart(const Body &a, const Body &b, const InteractionSettings &s,
                   SeparationCache cache);
+PairForceResult apart_result(const Body &a, const Body &b, const InteractionSettings &s,
+                             double dt, double *history, InteractionScratch &scratch,
+                             ContactStats &stats);
 
 // The reach (m) a search keeps its candidates with: coherence x cutoff, or, for bodies that
 // move faster, what their relative motion covers in kCandidateSteps steps (translation plus
@@ -146,8 +147,5 @@ bool proven_apart(const Body &a, const Body &b, const InteractionSettings &s,
 // pairs that never come close.
 constexpr double kCandidateSteps = 4.0, kCandidateReachCap = 1.0;
 double candidate_reach(const Body &a, const Body &b, double coherence, double cutoff, double dt);
-PairForceResult apart_result(const Body &a, const Body &b, const InteractionSettings &s,
-                             double dt, double *history, InteractionScratch &scratch,
-                             ContactStats &stats);
 
 } // namespace tri
