@@ -200,6 +200,7 @@ bool contact_polygon(const Vector3d &a0, const Vector3d &a1, const Vector3d &a2,
   patch.weight = std::max(0.0, weight);
   patch.weight2 = std::max(0.0, weight2);
   patch.direction = m;
+  patch.cos_half_angle = c_half;
   patch.overlap_gradient = overlap.gradient.x() * u + overlap.gradient.y() * v;
   const Vector2d cen = area_moment / area; // area centroid relative to p0
   const Vector2d c2 = p0 + (weight > 0.0 ? Vector2d(moment / weight) : cen);
@@ -291,6 +292,67 @@ ExcessIntegral excess_over(const ContactPolygon &patch, double level, const Vect
     r.square = -r.square;
   }
   return r;
+}
+
+void add_overlap_moments(const ContactPolygon &patch, double layer, const Vector3d &normal,
+                         const Vector3d &origin, OverlapMoments &sum) {
+  if (patch.num_vertices < 3 || !(patch.cos_half_angle > 0.0))
+    return;
+  // Fan from corner 0; each corner taken on a's surface (below the mid-surface by half the gap
+  // along m), where o is layer minus the distance from b's plane whatever m is, so neighbouring
+  // polygons of a's facets share their corners; projected onto the plane through `origin`
+  // orthogonal to `normal`; areas signed by the corners' order (counter-clockwise about m), turned positive.
+  // For a linear f on a triangle (barycentric l): integral f dA = A / 3 sum f_i, integral
+  // f x dA = A / 12 (sum f_i sum x_i + sum f_i x_i); cubic terms from integral of l_i l_j l_k
+  // dA = A / 60 (1 + d_ij + d_ik + d_jk + 2 d_ij d_jk) (Kronecker d): integral o^3 dA = A / 10
+  // h3(o_0, o_1, o_2) (complete homogeneous symmetric polynomial), integral o^2 x dA = A / 60
+  // sum_j x_j (S^2 + sum_i o_i^2 + 2 o_j S + 2 o_j^2), S = sum_i o_i.
+  const double orientation = patch.direction.dot(normal) < 0.0 ? -1.0 : 1.0;
+  auto flat = [&](int i) {
+    const double gap = (layer - patch.corner_overlaps[i]) / patch.cos_half_angle;
+    const Vector3d d = patch.vertices[i] - 0.5 * gap * patch.direction - origin;
+    return Vector3d(d - d.dot(normal) * normal);
+  };
+  const Vector3d x0 = flat(0);
+  const double o0 = patch.corner_overlaps[0];
+  for (int i = 1; i + 1 < patch.num_vertices; ++i) {
+    const Vector3d x1 = flat(i), x2 = flat(i + 1);
+    const double o1 = patch.corner_overlaps[i], o2 = patch.corner_overlaps[i + 1];
+    const double at = 0.5 * orientation * (x1 - x0).cross(x2 - x0).dot(normal);
+    const double s1 = o0 + o1 + o2, squares = o0 * o0 + o1 * o1 + o2 * o2;
+    const double pairs = o0 * o1 + o1 * o2 + o2 * o0;
+    sum.area += at;
+    sum.area1 += at / 3.0 * (x0 + x1 + x2);
+    sum.m1 += at / 3.0 * s1;
+    sum.m2 += at / 6.0 * (squares + pairs);
+    sum.m3 += at / 10.0 *
+              (o0 * o0 * o0 + o1 * o1 * o1 + o2 * o2 * o2 + o0 * o0 * (o1 + o2) +
+               o1 * o1 * (o0 + o2) + o2 * o2 * (o0 + o1) + o0 * o1 * o2);
+    sum.first1 += at / 12.0 * (s1 * (x0 + x1 + x2) + o0 * x0 + o1 * x1 + o2 * x2);
+    sum.second1 += at / 60.0 *
+                   ((s1 * s1 + squares + 2.0 * o0 * s1 + 2.0 * o0 * o0) * x0 +
+                    (s1 * s1 + squares + 2.0 * o1 * s1 + 2.0 * o1 * o1) * x1 +
+                    (s1 * s1 + squares + 2.0 * o2 * s1 + 2.0 * o2 * o2) * x2);
+  }
+}
+
+CurvedPeak curved_peak(double area, double m1, double m2, double m3) {
+  CurvedPeak c;
+  if (!(area > 0.0 && m1 > 0.0 && m2 > 0.0 && m3 > 0.0))
+    return c;
+  const double t = m1 * m3 / (m2 * m2);
+  const double x = (1.35 - t) / 0.1;
+  c.validity = !(x > 0.0) ? 0.0 : !(x < 1.0) ? 1.0 : x * x * (3.0 - 2.0 * x);
+  if (!(c.validity > 0.0))
+    return c;
+  const double den = 3.0 * m2 * m2 - 2.0 * m1 * m3; // >= 0.3 m2^2 where valid
+  c.peak = m2 * m3 / den;
+  const double den2 = den * den;
+  // Partial derivatives of the peak in M1, M2, M3, times dM_p / do(c_(p-1)) = p M_(p-1).
+  c.a_area = 2.0 * m2 * m3 * m3 / den2 * area;
+  c.a_pressure = -m3 * (3.0 * m2 * m2 + 2.0 * m1 * m3) / den2 * 2.0 * m1;
+  c.a_second = 3.0 * m2 * m2 * m2 / den2 * 3.0 * m2;
+  return c;
 }
 
 DistanceIntegral polygon_distance_integral(const Vector3d *vertices, int n, const Vector3d &p,

@@ -94,6 +94,7 @@ struct ContactPolygon {
   double weight2 = 0.0;     // m^4, integral of o^2 dA
   double max_overlap = 0.0; // m, largest local overlap (at a corner)
   Eigen::Vector3d direction = Eigen::Vector3d::UnitZ(); // unit, m (areas are measured along it)
+  double cos_half_angle = 1.0; // cos(phi / 2) = m . n_a: gap along m times it is a distance
   Eigen::Vector3d overlap_gradient = Eigen::Vector3d::Zero(); // 1, of o along P (orthogonal to m)
   int num_vertices = 0; // corners of the patch (0 when area is 0)
   Eigen::Vector3d vertices[kPolygonMaxVertices]; // m, world frame, counter-clockwise about m
@@ -126,6 +127,46 @@ struct ExcessIntegral {
 };
 ExcessIntegral excess_over(const ContactPolygon &patch, double level,
                            const Eigen::Vector3d &origin);
+
+// The peak of a curved patch's overlap from its moments M1, M2, M3 (integrals of o, o^2, o^3
+// over the patch, o = 0 on its border) and its gradient (contact_reduction.h, step 5c).
+// For a profile o = D - f(x), f homogeneous of any degree k about the peak (f(s x) = s^k f(x):
+// a cone k = 1, a wedge, a paraboloid k = 2, flat k -> infinity) in one or two dimensions,
+// M_p = p c D^(a + p) B(a + 1, p), a = dim / k, so r1 = M2 / M1 = 2 D / (a + 2) and
+// r2 = M3 / M2 = 3 D / (a + 3), and eliminating a:
+//   peak = r1 r2 / (3 r1 - 2 r2) = M2 M3 / (3 M2^2 - 2 M1 M3)  = D exactly, for every such
+// profile, without knowing k -- a vertex's cone, an edge's wedge and a ball's cap alike. It is
+// an integral, so on a faceted ball it does not see which vertex is deepest: it is the smooth
+// cap's peak, where the deepest vertex jumps from vertex to vertex and its lever turns with
+// the ball. Rigid motion changes o by an affine do(x); with o = 0 on the border,
+// dM_p = p M_(p-1) do(c_(p-1)) (c_0 the area centre, c_1 the centre of pressure, c_2 the
+// centroid of o^2), so d peak = a_area do(c_0) + a_pressure do(c_1) + a_second do(c_2): the
+// gradient acts at (sum a_i c_i) / (sum a_i); sum a_i = 1 for the profiles above (a uniform
+// do raises the peak by do). t = M1 M3 / M2^2 is 1 (flat) to 1.2 (cone) for them and tends to
+// 1.5 (where the denominator vanishes) only for a spike sharper than any convex corner;
+// `validity` falls smoothly from 1 at t = 1.25 to 0 at 1.35, where the caller keeps the
+// deepest point's law.
+struct CurvedPeak {
+  double peak = 0.0;                               // m
+  double a_area = 0.0, a_pressure = 0.0, a_second = 0.0; // 1, the gradient's weights
+  double validity = 0.0;                           // 1, see above
+};
+CurvedPeak curved_peak(double area, double m1, double m2, double m3);
+
+// The moments of a patch's overlap o (affine on it; corner values corner_overlaps) with areas
+// measured along one `normal` (unit) for all the polygons of a contact: each polygon's own
+// direction m differs from its neighbours' by half their tilt, and moments taken along
+// different directions do not add up to those of one field (a vertex's cone came out 1 % off
+// its peak), and so are the corners' positions: the moments take each corner on a's surface.
+// `layer`: the one the patch was made with. Positions relative to `origin` (m).
+struct OverlapMoments {
+  double area = 0.0, m1 = 0.0, m2 = 0.0, m3 = 0.0;  // m^2, m^3, m^4, m^5
+  Eigen::Vector3d area1 = Eigen::Vector3d::Zero();   // integral of x dA, m^3
+  Eigen::Vector3d first1 = Eigen::Vector3d::Zero();  // integral of o x dA, m^4
+  Eigen::Vector3d second1 = Eigen::Vector3d::Zero(); // integral of o^2 x dA, m^5
+};
+void add_overlap_moments(const ContactPolygon &patch, double layer, const Eigen::Vector3d &normal,
+                         const Eigen::Vector3d &origin, OverlapMoments &sum);
 
 // Integrals over a planar polygon `v` (n corners, in order, either orientation), projected
 // along `normal` (unit) onto the plane through `p` orthogonal to it, of 1 and of the distance

@@ -95,6 +95,14 @@ bool absorbed_by(const std::vector<Raw> &raw, const std::vector<int> &members,
 // normal: ties up to rounding (see the header, step 4).
 constexpr double kNormalDepthBand = 1e-6;
 
+// Step 5c: the share of a class's raw overlap on members without a polygon from which on a
+// curved patch keeps its deepest corner (smoothly from 0).
+constexpr double kCurvedOutsideShare = 0.05;
+// Step 5c: the number of facets a patch spans from which on its moments' peak starts to count,
+// and from which on it is used alone (smoothly between).
+constexpr double kCurvedFacetsFrom = 2.0;
+constexpr double kCurvedFacetsFull = 8.0;
+
 // Members within this fraction of the layer of the deepest one share the deepest point, with
 // weights falling linearly to zero across it (header, step 5).
 constexpr double kDeepestTaper = 1e-3;
@@ -162,6 +170,14 @@ double smoothstep(double x) {
   return x * x * (3.0 - 2.0 * x);
 }
 
+// How curved a patch is (step 5c): 0 while its polygons' overlap gradients agree (a face on a
+// face, tilted or not: the deepest corner is the peak of the real surfaces), 1 once they spread
+// by 2 kFlatGradientSpread (the facets of a ball, a vertex's or an edge's facets: the moments'
+// peak). The complement of face_weight_of's spread factor.
+double curved_weight(double spread) {
+  return smoothstep((spread - kFlatGradientSpread) / kFlatGradientSpread);
+}
+
 // Face weight of a patch (step 6): 1 when its polygons are the overlap of two flat regions
 // (the same overlap gradient over the whole patch: a face on a face, tilted or not, evenly or
 // eccentrically pressed), 0 when the gradient turns over the patch (the facets of a ball, a
@@ -172,7 +188,7 @@ double smoothstep(double x) {
 double face_weight_of(double spread, double tilt) {
   const double tilt_full = 2.0 * std::tan(0.25 * kParallelFaceAngle);
   const double tilt_end = 2.0 * std::tan(0.5 * kParallelFaceAngle);
-  return (1.0 - smoothstep((spread - kFlatGradientSpread) / kFlatGradientSpread)) *
+  return (1.0 - curved_weight(spread)) *
          (1.0 - smoothstep((tilt - tilt_full) / (tilt_end - tilt_full)));
 }
 
@@ -189,6 +205,7 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
   const Raw &s = raw[seed];
   double deepest_plain = -std::numeric_limits<double>::infinity(); // members without a polygon
   double D_poly = 0.0; // the polygon members' deepest overlap, exact (step 5b)
+  double plain_overlap = 0.0, member_overlap = 0.0; // step 5c: how much lies outside polygons
   p.min_distance = std::numeric_limits<double>::infinity();
   for (int i : members) {
     if (cls[i] != c)
@@ -207,7 +224,9 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
       D_poly = std::max(D_poly, exact_overlap(r, faces, layer));
     } else {
       deepest_plain = std::max(deepest_plain, r.overlap);
+      plain_overlap += r.overlap;
     }
+    member_overlap += r.overlap;
   }
   p.tri_a = s.tri_a;
   p.tri_b = s.tri_b;
@@ -260,7 +279,7 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
   const double level = std::min(D_poly, deepest_corner) - taper;
   double excess = 0.0;
   Vector3d excess1 = Vector3d::Zero(), excess_normal = Vector3d::Zero();
-  double area = 0.0, weight = 0.0, weight2 = 0.0;
+  double area = 0.0, weight = 0.0, weight2 = 0.0, facet_area = 0.0;
   Vector3d area1 = Vector3d::Zero(), pressure1 = Vector3d::Zero(), area_normal = Vector3d::Zero();
   Eigen::Matrix3d area2 = Eigen::Matrix3d::Zero();
   Vector3d gradient1 = Vector3d::Zero();
@@ -291,6 +310,7 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
     excess_normal += e.weight * poly.direction;
     const Vector3d d = poly.area_centroid - s.point;
     area += poly.area;
+    facet_area += poly.weight * poly.min_triangle_area;
     weight += poly.weight;
     weight2 += poly.weight2;
     area1 += poly.area * d;
@@ -334,29 +354,86 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
   p.point = deepest;
   p.overlap = p.energy_overlap = D;
   p.normal = deepest_normal;
-  if (beta > 0.0 && plain_share < 1.0) {
-    // Energy 1/2 kn Omega, Omega = (1 - beta) D^2 + beta Q, Q = mean square overlap: its
-    // gradient acts along the normal at the deepest point, the area centre and the centre of
-    // pressure with the weights below (header, step 5b).
+  const Vector3d mean_gradient = gradient1 / area;
+  const double spread = std::sqrt(std::max(0.0, gradient2 / area - mean_gradient.squaredNorm()));
+  // Step 5c: a curved patch (its overlap gradient turns over it) takes the peak of its moments
+  // instead of its deepest corner; w is how curved, times the estimate's validity.
+  // The moments see only the polygons: a patch reaching beyond their range (members without a
+  // polygon: an outer ring of facets tilted past kParallelFaceAngle, an edge's steep side) is cut
+  // off and its moments' peak is not its own, so it keeps the deepest corner.
+  const double outside = member_overlap > 0.0 ? plain_overlap / member_overlap : 0.0;
+  // And only a patch that spans many facets is a smooth surface seen through its facets: one
+  // or two facets (a vertex, an edge, a coarse ball) are the surface itself, and their deepest
+  // corner is its peak. Facets spanned: n = M1 / (D f), f the polygons' overlap-weighted
+  // smaller triangle area (continuous as polygons enter at o = 0; a paraboloid's n is half
+  // the facets under its area); n has a known gradient (dM1 = A do(c_A), dD = do(p_D)), so the
+  // blend's own gradient enters the force (below) and a ball passing through it keeps its
+  // energy.
+  const double facet_scale = weight > 0.0 ? facet_area / weight : 0.0;
+  const double facets = facet_scale > 0.0 && D > 0.0 ? weight / (D * facet_scale) : 0.0;
+  const double facets_u = (facets - kCurvedFacetsFrom) / (kCurvedFacetsFull - kCurvedFacetsFrom);
+  const double other_weights =
+      curved_weight(spread) * (1.0 - smoothstep(outside / kCurvedOutsideShare)) *
+      (1.0 - plain_share);
+  double w = other_weights * smoothstep(facets_u);
+  CurvedPeak curved;
+  Vector3d curved_area_centre, curved_pressure_centre, curved_second_centre;
+  if (w > 0.0) {
+    OverlapMoments mo;
+    for (std::size_t k = 0; k < num_polygons; ++k)
+      add_overlap_moments(polygons[k], layer, deepest_normal, s.point, mo);
+    curved = curved_peak(mo.area, mo.m1, mo.m2, mo.m3);
+    w *= curved.validity;
+    if (w > 0.0) {
+      curved_area_centre = s.point + mo.area1 / mo.area;
+      curved_pressure_centre = s.point + mo.first1 / mo.m1;
+      curved_second_centre = s.point + mo.second1 / mo.m2;
+    }
+  }
+  if ((beta > 0.0 || w > 0.0) && plain_share < 1.0) {
+    // Energy 1/2 kn Omega, Omega = (1 - beta) X + beta Q, X = (1 - w) D^2 + w Phi^2, Q = mean
+    // square overlap, Phi the curved peak: its gradient acts along the normal at the deepest
+    // point, the area centre, the centre of pressure and the centroid of o^2 with the weights
+    // below (header, steps 5b and 5c).
     const double b = beta * (1.0 - plain_share);
     const double slope = flat_blend_slope(r) * (1.0 - plain_share);
-    const double q_minus = mean_square - D * D; // <= 0
-    const double a_deep =
-        2.0 * (1.0 - b) * D + q_minus * slope * (1.0 - kFlatPatchBand * r) / (kFlatPatchBand * D);
-    const double a_area = -q_minus * slope / (kFlatPatchBand * D);
+    const double phi = curved.peak;
+    const double x_law = (1.0 - w) * D * D + w * phi * phi;
+    const double q_minus = mean_square - x_law;
+    // d w = other_weights smoothstep'(u) du, u affine in n = M1 / (D f) (f held fixed).
+    double blend_area = 0.0, blend_deep = 0.0;
+    if (w > 0.0 && facets_u < 1.0) {
+      const double dw_dn = other_weights * 6.0 * facets_u * (1.0 - facets_u) /
+                           (kCurvedFacetsFull - kCurvedFacetsFrom);
+      const double jump = (1.0 - b) * (phi * phi - D * D) * dw_dn;
+      blend_area = jump * area / (D * facet_scale);
+      blend_deep = -jump * weight / (D * D * facet_scale);
+    }
+    const double a_deep = 2.0 * (1.0 - b) * (1.0 - w) * D +
+                          q_minus * slope * (1.0 - kFlatPatchBand * r) / (kFlatPatchBand * D) +
+                          blend_deep;
+    const double curved_scale = 2.0 * (1.0 - b) * w * phi;
+    const double a_area = -q_minus * slope / (kFlatPatchBand * D) + blend_area;
     const double a_pressure = 2.0 * b * mean;
-    const double sum = a_deep + a_area + a_pressure;
     const Vector3d area_centre = s.point + area1 / area;
     const Vector3d pressure_centre =
         weight > 0.0 ? Vector3d(s.point + pressure1 / weight) : area_centre;
-    p.point = (a_deep * deepest + a_area * area_centre + a_pressure * pressure_centre) / sum;
-    p.overlap = 0.5 * sum;
-    p.energy_overlap = std::sqrt(std::max(0.0, (1.0 - b) * D * D + b * mean_square));
-    const Vector3d blended = (1.0 - b) * deepest_normal + b * poly_normal;
-    p.normal = blended.normalized();
+    Vector3d moment = a_deep * deepest + a_area * area_centre + a_pressure * pressure_centre;
+    double sum = a_deep + a_area + a_pressure;
+    if (w > 0.0) {
+      moment += curved_scale * (curved.a_area * curved_area_centre +
+                                curved.a_pressure * curved_pressure_centre +
+                                curved.a_second * curved_second_centre);
+      sum += curved_scale * (curved.a_area + curved.a_pressure + curved.a_second);
+    }
+    if (sum > 0.0) {
+      p.point = moment / sum;
+      p.overlap = 0.5 * sum;
+      p.energy_overlap = std::sqrt(std::max(0.0, (1.0 - b) * x_law + b * mean_square));
+      const Vector3d blended = (1.0 - b) * deepest_normal + b * poly_normal;
+      p.normal = blended.normalized();
+    }
   }
-  const Vector3d mean_gradient = gradient1 / area;
-  const double spread = std::sqrt(std::max(0.0, gradient2 / area - mean_gradient.squaredNorm()));
   p.face_weight = face_weight_of(spread, mean_gradient.norm()) * (1.0 - plain_share);
   // Step 6: the patch's extent about the point. Parallel-axis theorem from s.point to p.point
   // (q = p.point - s.point), then onto the contact plane.

@@ -628,3 +628,43 @@ TEST(PolygonDistanceIntegral, PatchCornersCarryThePatch) {
   const double quadrature = sum * area(kBase) / (double(N) * N);
   EXPECT_NEAR(r.distance, quadrature, 1e-5 * quadrature);
 }
+
+// Step 5c of contact_reduction.h: the peak of a patch from its overlap moments. A pyramid's
+// apex (a vertex of a coarse ball, tilted or not) pressed into a plane is a cone profile: the
+// moments' peak is the apex's overlap, and its gradient acts at the apex.
+TEST(CurvedPeak, VertexConeGivesItsApex) {
+  const double layer = 2e-4;
+  const Tri floor1{{Vector3d(-1, -1, 0), Vector3d(1, -1, 0), Vector3d(1, 1, 0)}};
+  const Tri floor2{{Vector3d(-1, -1, 0), Vector3d(1, 1, 0), Vector3d(-1, 1, 0)}};
+  for (double tilt : {0.0, 0.02, 0.04}) {
+    for (int sides : {4, 5, 6}) {
+      const double depth = 0.6 * layer; // apex overlap
+      const Vector3d apex(1e-4, -2e-4, layer - depth);
+      std::vector<Vector3d> ring;
+      for (int k = 0; k < sides; ++k) {
+        const double phi = 2 * M_PI * k / sides + 0.1;
+        const Vector3d d(std::cos(phi), std::sin(phi), 0.0);
+        const double r = 4e-3 * (1.0 + 0.2 * std::sin(3.0 * k)); // irregular, beyond o = 0
+        ring.push_back(apex + r * d + Vector3d(0, 0, r * (0.1 + tilt * d.x())));
+      }
+      tri::OverlapMoments mo;
+      for (int k = 0; k < sides; ++k) {
+        const Tri facet{{apex, ring[k], ring[(k + 1) % sides]}};
+        for (const Tri &f : {floor1, floor2}) {
+          tri::ContactPolygon p;
+          if (patch(facet, f, Vector3d(0, 0, -1), layer, p) && p.area > 0.0)
+            tri::add_overlap_moments(p, layer, Vector3d(0, 0, -1), apex, mo);
+        }
+      }
+      const tri::CurvedPeak c = tri::curved_peak(mo.area, mo.m1, mo.m2, mo.m3);
+      EXPECT_NEAR(c.peak, depth, 1e-9 * depth) << sides << " " << tilt;
+      EXPECT_DOUBLE_EQ(c.validity, 1.0);
+      const double sum = c.a_area + c.a_pressure + c.a_second;
+      EXPECT_NEAR(sum, 1.0, 1e-9);
+      const Vector3d point = (c.a_area * mo.area1 / mo.area + c.a_pressure * mo.first1 / mo.m1 +
+                              c.a_second * mo.second1 / mo.m2) /
+                             sum;
+      EXPECT_NEAR((point - Vector3d(0, 0, point.z())).norm(), 0.0, 1e-9 * 4e-3) << sides << " " << tilt;
+    }
+  }
+}

@@ -1,0 +1,305 @@
+#!/usr/bin/python3
+"""Oblique impacts in the sphere limit: icospheres of 1280, 5120 and 20480 triangles (levels
+3, 4, 5; fix tri/wall, tangential history) hitting a plane wall obliquely, against an ideal
+ball of the icosphere's own mass, inertia and lever, and LIGGGHTS's own spheres (pair gran /
+fix wall/gran model hooke/stiffness tangential history).
+
+  /usr/bin/python3 run.py [--exe build/src_plugin/driver/liggghts-tri] [--work /tmp/oblique]
+                          [--liggghts /usr/bin/liggghts]
+
+Normal speed VN along -z, tangential speed vt = ratio x VN along +x (ratios 0.1, 0.3, 1, 3), no
+spin, no gravity; linear springs kn, kt = 2/7 kn and kt = kn, gamman = gammat = 0, mu 0.3.
+Measured after the ball has left the wall: vt' = vx and omega' = omega_y. The reference is
+`ideal_ball` below, a replica of LIGGGHTS's hooke/stiffness wall contact with tangential
+history and nve/sphere's velocity Verlet; it is first checked against LIGGGHTS spheres (its
+m, I = 2/5 m r^2, r), then run with the icosphere's mesh mass, mesh inertia and the tri
+contact lever R + eps - overlap / 2. Errors: (vt'_tri - vt'_ref) / vt and
+(omega'_tri - omega'_ref) R / vt, vt the incoming tangential speed. Prints the README tables,
+writes oblique.png next to this script. Needs Debian's numpy and matplotlib (/usr/bin/python3).
+"""
+import argparse
+import math
+import os
+import sys
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.abspath(os.path.join(HERE, "..", "..", ".."))
+sys.path.insert(0, os.path.join(REPO, "validation", "meshes"))
+sys.path.insert(0, os.path.join(REPO, "validation"))
+import meshgen  # noqa: E402
+import valtools  # noqa: E402
+
+R, RHO, EPS = 0.002, 2500.0, 5e-6        # m, kg/m^3, m (soft layer; the wall's is the same)
+KN, MU, VN = 20000.0, 0.3, 0.1           # N/m, -, m/s
+LEVELS = (3, 4, 5)
+RATIOS = (0.1, 0.3, 1.0, 3.0)            # vt / vn
+SERIES = (("2/7", 2.0 / 7.0), ("1", 1.0))  # kt / kn
+SEEDS = (11, 22, 33, 44)                 # orient random SEED: four orientations
+DT, STEPS, GAP = 1e-6, 400, 1e-6         # s, -, m (gap outside the layers at t = 0)
+TOL = 0.01
+QUIET = 20                               # the last QUIET rows must be out of contact
+
+
+def mesh_mass_inertia(level):
+    """Mass and moment of inertia about an axis through the centre (isotropic for an
+    icosphere) of the closed mesh, density RHO: tetrahedra from the origin (the centre)."""
+    verts, faces = meshgen.icosphere(level, R)
+    v = np.array(verts)
+    a, b, c = (v[[f[k] for f in faces]] for k in range(3))
+    vol = np.einsum("ij,ij->i", a, np.cross(b, c)) / 6.0
+
+    def second(k):  # integral of x_k^2 dV
+        x0, x1, x2 = a[:, k], b[:, k], c[:, k]
+        return (vol / 10.0 * (x0 * x0 + x1 * x1 + x2 * x2 + x0 * x1 + x1 * x2 + x0 * x2)).sum()
+    return RHO * vol.sum(), RHO * (second(0) + second(2))
+
+
+def facets(level):
+    """(largest sag R - distance of a face's plane from the centre, i.e. R (1 - cos of the
+    largest half facet angle), mean edge length)."""
+    verts, faces = meshgen.icosphere(level, R)
+    v = np.array(verts)
+    a, b, c = (v[[f[k] for f in faces]] for k in range(3))
+    n = np.cross(b - a, c - a)
+    d = np.einsum("ij,ij->i", a, n) / np.linalg.norm(n, axis=1)
+    edges = np.concatenate([np.linalg.norm(b - a, axis=1), np.linalg.norm(c - b, axis=1),
+                            np.linalg.norm(a - c, axis=1)])
+    return R - d.min(), edges.mean()
+
+
+def ideal_ball(m, inertia, r, kn, kt, mu, vn, vt, dt=DT, steps=STEPS, gap=GAP):
+    """A ball of mass m, moment of inertia `inertia`, radius r (lever r - overlap / 2, as
+    LIGGGHTS's wall contact, surface_model_default.h) on the plane z = 0: LIGGGHTS's
+    hooke/stiffness normal force kn overlap (gamman 0), tangential_model_history.h (shear += v_t
+    dt, Ft = -kt shear, capped at mu Fn by rescaling the shear), nve/sphere's velocity Verlet,
+    starting at z = r + gap. Returns (vx, vz, omega_y) after `steps` steps."""
+    z, vx, vz, wy = r + gap, vt, -vn, 0.0
+    fx = fz = ty = 0.0
+    shear = 0.0
+    h = 0.5 * dt
+    for _ in range(steps):
+        vx += h * fx / m
+        vz += h * fz / m
+        wy += h * ty / inertia
+        z += dt * vz
+        delta = r - z
+        if delta > 0:
+            fn = kn * delta
+            lever = r - 0.5 * delta
+            shear += (vx - lever * wy) * dt
+            ft = -kt * shear
+            if abs(ft) > mu * fn:
+                ft *= mu * fn / abs(ft)
+                shear = -ft / kt
+            fx, fz, ty = ft, fn, -lever * ft
+        else:
+            fx = fz = ty = 0.0
+            shear = 0.0
+        vx += h * fx / m
+        vz += h * fz / m
+        wy += h * ty / inertia
+    return vx, vz, wy
+
+
+def after(path, contact_col):
+    """The last row of a trace (time z vx vy vz wx wy wz contact ...), checked to be out of
+    contact for the last QUIET rows and to have touched at all."""
+    rows = np.array(valtools.read_rows(path))
+    assert np.any(rows[:, contact_col] != 0), (path, "no contact")
+    assert np.all(rows[-QUIET:, contact_col] == 0), (path, "still in contact at the end")
+    return rows[-1], rows
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--exe", default=valtools.default_exe())
+    ap.add_argument("--liggghts", default="/usr/bin/liggghts")
+    ap.add_argument("--work", default="/tmp/oblique")
+    args = ap.parse_args()
+    exe = os.path.abspath(args.exe)
+    os.makedirs(args.work, exist_ok=True)
+    for level in LEVELS:
+        meshgen.write_stl(os.path.join(args.work, "ico%d.stl" % level),
+                          *meshgen.icosphere(level, R))
+    meshgen.write_stl(os.path.join(args.work, "plane.stl"), *meshgen.plane(0.01))
+
+    mass = {lv: mesh_mass_inertia(lv) for lv in LEVELS}
+    lever0 = R + EPS          # the tri lever at zero overlap in the sphere limit
+    res = {}                  # (level, series, ratio) -> dict
+    check = []                # the reference against LIGGGHTS spheres
+    peak = 0.0
+    for level in LEVELS:
+        m, inertia = mass[level]
+        for sname, kfac in SERIES:
+            kt = kfac * KN
+            for ratio in RATIOS:
+                vt = ratio * VN
+                common = dict(kn=KN, kt="%.17g" % kt, mu=MU, vn=VN, vt="%.17g" % vt, gap=GAP,
+                              dt=DT, steps=STEPS)
+                # LIGGGHTS sphere: radius = the tri lever at zero overlap, the mesh mass
+                # (its inertia is 2/5 m r^2, not the mesh's)
+                name = "sphere_l%d_kt%s_r%g.txt" % (level, sname.replace("/", "_"), ratio)
+                valtools.run_deck(args.liggghts, os.path.join(HERE, "in.sphere"),
+                                  dict(out=name, plane="plane.stl", r="%.17g" % lever0,
+                                       mass="%.17g" % m, **common),
+                                  args.work, os.path.join(args.work, name + ".screen"))
+                srow, _ = after(os.path.join(args.work, name), 8)
+                assert abs(srow[10] / m - 1) < 1e-12, (name, srow[10], m)
+                isph = 0.4 * srow[10] * lever0 ** 2
+                rv = ideal_ball(srow[10], isph, lever0, KN, kt, MU, VN, vt)
+                check.append(max(abs(rv[0] - srow[2]) / vt, abs(rv[2] - srow[6]) * R / vt,
+                                 abs(rv[1] - srow[4]) / VN))
+                ref = ideal_ball(m, inertia, lever0, KN, kt, MU, VN, vt)
+                ev, ew, off, vz = [], [], [], []
+                for seed in SEEDS:
+                    name = "tri_l%d_kt%s_r%g_s%d.txt" % (level, sname.replace("/", "_"),
+                                                        ratio, seed)
+                    valtools.run_deck(exe, os.path.join(HERE, "in.tri"),
+                                      dict(out=name, mesh="ico%d.stl" % level,
+                                           plane="plane.stl", R=R, eps=EPS, seed=seed,
+                                           **common),
+                                      args.work, os.path.join(args.work, name + ".screen"))
+                    row, rows = after(os.path.join(args.work, name), 8)
+                    assert abs(row[10] / m - 1) < 1e-9, (name, row[10], m)
+                    peak = max(peak, rows[:, 9].max())
+                    ev.append((row[2] - ref[0]) / vt)
+                    ew.append((row[6] - ref[2]) * R / vt)
+                    vz.append(row[4] / VN)
+                    # out of the impact plane: sideways speed and spin about x and z
+                    off.append(max(abs(row[3]) / vt, abs(row[5]) * R / vt,
+                                   abs(row[7]) * R / vt))
+                res[level, sname, ratio] = dict(
+                    ref=ref, sphere=(srow[2], srow[4], srow[6]), ev=np.array(ev),
+                    ew=np.array(ew), off=np.array(off), vz=np.array(vz))
+
+    # diagnostic: a head-on frictionless impact (vt = 0, mu = 0) of the same icospheres; an
+    # ideal ball leaves with vz' = vn and no spin
+    normal = {}
+    for level in LEVELS:
+        spins, bounce = [], []
+        for seed in SEEDS:
+            name = "normal_l%d_s%d.txt" % (level, seed)
+            valtools.run_deck(exe, os.path.join(HERE, "in.tri"),
+                              dict(out=name, mesh="ico%d.stl" % level, plane="plane.stl", R=R,
+                                   eps=EPS, seed=seed, kn=KN, kt=KN, mu=0, vn=VN, vt=0,
+                                   gap=GAP, dt=DT, steps=STEPS),
+                              args.work, os.path.join(args.work, name + ".screen"))
+            row, _ = after(os.path.join(args.work, name), 8)
+            spins.append(math.sqrt(row[5] ** 2 + row[6] ** 2 + row[7] ** 2) * R / VN)
+            bounce.append(row[4] / VN - 1)
+        normal[level] = (np.array(spins), np.array(bounce))
+
+    print(valtools.machine_line())
+    tc = math.pi * math.sqrt(mass[5][0] / KN)
+    print("icosphere vertex radius R = %g m, density %g, epsilon = %g m (particle and wall), "
+          "kn = %g N/m, gamman = gammat = 0, mu = %g, vn = %g m/s, dt = %g s (contact time "
+          "pi sqrt(m / kn) = %.3g s = %d steps), %d steps; peak overlap %.3g m (in the layers "
+          "2 eps = %g m; spring estimate vn sqrt(m / kn) = %.3g m); orientations: orient "
+          "random %s" % (R, RHO, EPS, KN, MU, VN, DT, tc, round(tc / DT), STEPS, peak, 2 * EPS,
+                         VN * math.sqrt(mass[5][0] / KN), " ".join(map(str, SEEDS))))
+    print()
+    print("| level | triangles | mean edge (um) | facet sag R (1 - cos) (um) | mass (kg) | "
+          "I mesh (kg m^2) | I / (2/5 m R^2) | I / (2/5 m (R + eps)^2) |")
+    print("|---|---|---|---|---|---|---|---|")
+    for level in LEVELS:
+        m, inertia = mass[level]
+        sag, edge = facets(level)
+        print("| %d | %d | %.1f | %.3f | %.6g | %.6g | %.5f | %.5f |" % (
+            level, 20 * 4 ** level, 1e6 * edge, 1e6 * sag, m, inertia,
+            inertia / (0.4 * m * R * R), inertia / (0.4 * m * lever0 ** 2)))
+    print()
+    print("reference (ideal_ball) against LIGGGHTS spheres (r = R + eps = %g m, the mesh mass, "
+          "I = 2/5 m r^2), %d runs: worst |difference| of vt', vz', omega' R = %.2g x the "
+          "incoming speed" % (lever0, len(check), max(check)))
+    print()
+    print("Errors against the ideal ball of the icosphere's mass and inertia, lever R + eps - "
+          "overlap/2: e_v = (vt'_tri - vt'_ref) / vt, e_w = (omega'_tri - omega'_ref) R / vt; "
+          "mean (signed) and worst |.| over the %d orientations; off-plane: worst of |vy'|, "
+          "|omega_x'| R, |omega_z'| R over vt" % len(SEEDS))
+    print()
+    print("| kt / kn | vt / vn | level | vt'/vt ref | omega' R / vt ref | LIGGGHTS sphere "
+          "vt'/vt, omega' R/vt | e_v mean | e_v worst | e_w mean | e_w worst | off-plane "
+          "worst | pass (1 %) |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+    for sname, _ in SERIES:
+        for ratio in RATIOS:
+            for level in LEVELS:
+                r = res[level, sname, ratio]
+                vt = ratio * VN
+                worst = max(np.abs(r["ev"]).max(), np.abs(r["ew"]).max())
+                print("| %s | %g | %d | %.5f | %.5f | %.5f, %.5f | %+.3f%% | %.3f%% | %+.3f%% | "
+                      "%.3f%% | %.3f%% | %s |" % (
+                          sname, ratio, level, r["ref"][0] / vt, r["ref"][2] * R / vt,
+                          r["sphere"][0] / vt, r["sphere"][2] * R / vt,
+                          100 * r["ev"].mean(), 100 * np.abs(r["ev"]).max(),
+                          100 * r["ew"].mean(), 100 * np.abs(r["ew"]).max(),
+                          100 * r["off"].max(),
+                          ("PASS" if worst <= TOL else "FAIL") if level == 5 else "-"))
+    n5 = [(s, q) for s, _ in SERIES for q in RATIOS]
+    ok = sum(1 for s, q in n5 if max(np.abs(res[5, s, q]["ev"]).max(),
+                                     np.abs(res[5, s, q]["ew"]).max()) <= TOL)
+    print()
+    print("level 5: %d/%d (series, ratio) cases with vt' and omega' within %g %% in every "
+          "orientation" % (ok, len(n5), 100 * TOL))
+    for lv in LEVELS:
+        rvz = [abs(res[lv, s, q]["vz"] - 1).max() for s, _ in SERIES for q in RATIOS]
+        wv = max(max(np.abs(res[lv, s, q]["ev"]).max(), np.abs(res[lv, s, q]["ew"]).max())
+                 * q / math.hypot(1, q) for s, _ in SERIES for q in RATIOS)
+        print("level %d: worst |vz'/vn - 1| = %.3f%% (the ideal ball: 0, gamman = 0); worst "
+              "error of vt', omega' R normalised by the impact speed sqrt(vn^2 + vt^2) instead "
+              "of vt: %.3f%%" % (lv, 100 * max(rvz), 100 * wv))
+    print()
+    print("Diagnostic: head-on frictionless impact (vt = 0, mu = 0; the ideal ball leaves with "
+          "vz' = vn and no spin), over the %d orientations:" % len(SEEDS))
+    print()
+    print("| level | |omega'| R / vn mean | |omega'| R / vn worst | vz'/vn - 1 mean | "
+          "vz'/vn - 1 worst |")
+    print("|---|---|---|---|---|")
+    for lv in LEVELS:
+        sp, bo = normal[lv]
+        print("| %d | %.3f%% | %.3f%% | %+.4f%% | %+.4f%% |" % (
+            lv, 100 * sp.mean(), 100 * sp.max(), 100 * bo.mean(),
+            100 * bo[np.argmax(np.abs(bo))]))
+
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(1, 2, figsize=(12, 4.8), sharey=True)
+    colours = {q: "C%d" % k for k, q in enumerate(RATIOS)}
+    floor = 1e-6
+    for col, (key, title) in enumerate((("ev", "rebound tangential velocity vt'"),
+                                        ("ew", "rebound spin omega'"))):
+        a = ax[col]
+        for sname, _ in SERIES:
+            style = "o-" if sname == "2/7" else "s--"
+            for ratio in RATIOS:
+                worst = [max(np.abs(res[lv, sname, ratio][key]).max(), floor) for lv in LEVELS]
+                mean = [max(np.abs(res[lv, sname, ratio][key]).mean(), floor) for lv in LEVELS]
+                a.plot(LEVELS, [100 * w for w in worst], style, color=colours[ratio],
+                       label="kt/kn %s, vt/vn %g (worst)" % (sname, ratio))
+                a.plot(LEVELS, [100 * w for w in mean], style[0], color=colours[ratio],
+                       mfc="none", ms=9, alpha=0.6)
+        a.axhline(100 * TOL, color="k", lw=1, ls=":", label="1 % target")
+        a.set_yscale("log")
+        a.set_xticks(LEVELS)
+        a.set_xticklabels(["%d\n(%d tri)" % (lv, 20 * 4 ** lv) for lv in LEVELS])
+        a.set_xlabel("icosphere level")
+        a.set_title(title)
+        a.grid(alpha=0.3, which="both")
+    ax[0].set_ylabel("|error| / incoming vt (%)  [omega': x R / vt]")
+    ax[1].legend(fontsize=7, ncol=2)
+    fig.suptitle("Oblique impact on a plane: icosphere (fix tri/wall) against the ideal ball of "
+                 "its mass, inertia and lever; lines: worst of %d orientations, open markers: "
+                 "mean |error|\nkn %g N/m, eps %g um, vn %g m/s, mu %g, gamman = gammat = 0"
+                 % (len(SEEDS), KN, 1e6 * EPS, VN, MU), fontsize=9)
+    fig.tight_layout()
+    out = os.path.join(HERE, "oblique.png")
+    fig.savefig(out, dpi=110)
+    print("plot:", out)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
