@@ -102,7 +102,7 @@ Affine plane_height(const Vector3d &nt, const Vector3d &t0, const Vector3d &o, c
 
 bool contact_polygon(const Vector3d &a0, const Vector3d &a1, const Vector3d &a2, const Vector3d &b0,
                      const Vector3d &b1, const Vector3d &b2, const Vector3d &normal, double layer,
-                     ContactPolygon &patch) {
+                     ContactPolygon &patch, double max_angle) {
   // The defaults of the fields, without copying the corner arrays (3 KB, meaningful only up to
   // num_vertices): an assignment from ContactPolygon() copied them for every triangle pair.
   patch.~ContactPolygon();
@@ -114,7 +114,8 @@ bool contact_polygon(const Vector3d &a0, const Vector3d &a1, const Vector3d &a2,
   const Vector3d na = ca / la;
   Vector3d nb = cb / lb;
   const double c = na.dot(nb);
-  if (std::abs(c) < std::cos(kParallelFaceAngle))
+  static const double parallel_cos = std::cos(kParallelFaceAngle);
+  if (std::abs(c) < (max_angle == kParallelFaceAngle ? parallel_cos : std::cos(max_angle)))
     return false;
   if (c < 0.0)
     nb = -nb;
@@ -201,6 +202,8 @@ bool contact_polygon(const Vector3d &a0, const Vector3d &a1, const Vector3d &a2,
   patch.weight2 = std::max(0.0, weight2);
   patch.direction = m;
   patch.cos_half_angle = c_half;
+  patch.normal_b = nb.dot(m) < 0.0 ? Vector3d(-nb) : nb;
+  patch.normal_a = na.dot(m) < 0.0 ? Vector3d(-na) : na;
   patch.overlap_gradient = overlap.gradient.x() * u + overlap.gradient.y() * v;
   const Vector2d cen = area_moment / area; // area centroid relative to p0
   const Vector2d c2 = p0 + (weight > 0.0 ? Vector2d(moment / weight) : cen);
@@ -315,6 +318,7 @@ void add_overlap_moments(const ContactPolygon &patch, double layer, const Vector
   };
   const Vector3d x0 = flat(0);
   const double o0 = patch.corner_overlaps[0];
+  const double area0 = sum.area, m10 = sum.m1, m20 = sum.m2;
   for (int i = 1; i + 1 < patch.num_vertices; ++i) {
     const Vector3d x1 = flat(i), x2 = flat(i + 1);
     const double o1 = patch.corner_overlaps[i], o2 = patch.corner_overlaps[i + 1];
@@ -334,6 +338,10 @@ void add_overlap_moments(const ContactPolygon &patch, double layer, const Vector
                     (s1 * s1 + squares + 2.0 * o1 * s1 + 2.0 * o1 * o1) * x1 +
                     (s1 * s1 + squares + 2.0 * o2 * s1 + 2.0 * o2 * o2) * x2);
   }
+  sum.area_normal_a += (sum.area - area0) * patch.normal_a;
+  sum.area_normal += (sum.area - area0) * patch.normal_b;
+  sum.m1_normal += (sum.m1 - m10) * patch.normal_b;
+  sum.m2_normal += (sum.m2 - m20) * patch.normal_b;
 }
 
 CurvedPeak curved_peak(double area, double m1, double m2, double m3) {

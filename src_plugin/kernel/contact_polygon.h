@@ -75,6 +75,7 @@
 namespace tri {
 
 constexpr double kParallelFaceAngle = 0.17453292519943295; // rad, 10 degrees
+constexpr double kCurvedFacetAngle = 0.7853981633974483; // rad, 45 degrees (step 5c)
 constexpr double kPatchAreaRounding = 1e-9; // patch area below this fraction: touching only
 // Sutherland-Hodgman on a convex polygon adds at most one vertex per half-plane, but rounding
 // can make nearly collinear vertices alternate sides; each clip at most doubles the count (a
@@ -95,6 +96,8 @@ struct ContactPolygon {
   double max_overlap = 0.0; // m, largest local overlap (at a corner)
   Eigen::Vector3d direction = Eigen::Vector3d::UnitZ(); // unit, m (areas are measured along it)
   double cos_half_angle = 1.0; // cos(phi / 2) = m . n_a: gap along m times it is a distance
+  Eigen::Vector3d normal_b = Eigen::Vector3d::UnitZ(); // unit, b's plane normal, m . normal_b > 0
+  Eigen::Vector3d normal_a = Eigen::Vector3d::UnitZ(); // unit, a's plane normal, m . normal_a > 0
   Eigen::Vector3d overlap_gradient = Eigen::Vector3d::Zero(); // 1, of o along P (orthogonal to m)
   int num_vertices = 0; // corners of the patch (0 when area is 0)
   Eigen::Vector3d vertices[kPolygonMaxVertices]; // m, world frame, counter-clockwise about m
@@ -109,10 +112,14 @@ struct ContactPolygon {
 // width `layer` (eps_a + eps_b, m), `normal` the contact normal from a towards b (any non-zero
 // vector on the right side; only its sign relative to the faces is used). Returns false, and
 // leaves `patch` zero (default), when the triangles are not nearly parallel or one is degenerate.
+// `max_angle` (rad, < pi / 2): the angle up to which a pair counts as nearly parallel; the
+// polygon is well defined up to any such angle, and contact_reduction.h's step 5c takes the
+// moments of a curved patch over kCurvedFacetAngle (the rest of the reduction: 10 degrees).
 bool contact_polygon(const Eigen::Vector3d &a0, const Eigen::Vector3d &a1,
                      const Eigen::Vector3d &a2, const Eigen::Vector3d &b0,
                      const Eigen::Vector3d &b1, const Eigen::Vector3d &b2,
-                     const Eigen::Vector3d &normal, double layer, ContactPolygon &patch);
+                     const Eigen::Vector3d &normal, double layer, ContactPolygon &patch,
+                     double max_angle = kParallelFaceAngle);
 
 // The part of a patch where the local overlap exceeds `level` (m), weighted by the excess:
 // weight = integral over P of (o - level)^+ dA (m^3) and moment = integral of
@@ -164,6 +171,15 @@ struct OverlapMoments {
   Eigen::Vector3d area1 = Eigen::Vector3d::Zero();   // integral of x dA, m^3
   Eigen::Vector3d first1 = Eigen::Vector3d::Zero();  // integral of o x dA, m^4
   Eigen::Vector3d second1 = Eigen::Vector3d::Zero(); // integral of o^2 x dA, m^5
+  // Integrals of b's normal n_b times 1, o, o^2: a rigid translation d of b changes o by
+  // -n_b . d (b's plane moves along its normal), so dM_p = -p (integral of o^(p-1) n_b) . d,
+  // and the moments' peak is pushed along their weighted sum (a wall: its normal).
+  Eigen::Vector3d area_normal = Eigen::Vector3d::Zero(); // m^2
+  Eigen::Vector3d m1_normal = Eigen::Vector3d::Zero();   // m^3
+  Eigen::Vector3d m2_normal = Eigen::Vector3d::Zero();   // m^4
+  // Area integral of a's normal (how each surface turns over the patch: 1 - |mean normal|^2 is
+  // the mean square deviation of a unit normal).
+  Eigen::Vector3d area_normal_a = Eigen::Vector3d::Zero(); // m^2
 };
 void add_overlap_moments(const ContactPolygon &patch, double layer, const Eigen::Vector3d &normal,
                          const Eigen::Vector3d &origin, OverlapMoments &sum);

@@ -100,6 +100,9 @@ constexpr double kNormalDepthBand = 1e-6;
 constexpr double kCurvedOutsideShare = 0.05;
 // Step 5c: the number of facets a patch spans from which on its moments' peak starts to count,
 // and from which on it is used alone (smoothly between).
+// Step 5c: the angle between neighbouring facets up to which a curved patch is a smooth surface
+// (then smoothly to twice it, where it is its facets).
+constexpr double kCurvedFineAngle = 0.08;
 constexpr double kCurvedFacetsFrom = 2.0;
 constexpr double kCurvedFacetsFull = 8.0;
 
@@ -196,12 +199,13 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
                         const std::vector<int> &cls, const std::vector<int> &absorbed, int c,
                         int seed, double layer, const Vector3d &ref, const Faces &faces,
                         std::vector<ContactPolygon> &polygons,
-                        std::vector<double> &polygon_exact) {
+                        std::vector<double> &polygon_exact, std::vector<int> &plain) {
   ContactPoint p;
   // `polygons` only grows: entries [0, num_polygons) are this class's. Reusing the slots keeps
   // emplace_back from zeroing a 3 KB ContactPolygon per member (value-initialisation).
   std::size_t num_polygons = 0;
   polygon_exact.clear();
+  plain.clear();
   const Raw &s = raw[seed];
   double deepest_plain = -std::numeric_limits<double>::infinity(); // members without a polygon
   double D_poly = 0.0; // the polygon members' deepest overlap, exact (step 5b)
@@ -225,6 +229,7 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
     } else {
       deepest_plain = std::max(deepest_plain, r.overlap);
       plain_overlap += r.overlap;
+      plain.push_back(i);
     }
     member_overlap += r.overlap;
   }
@@ -358,36 +363,75 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
   const double spread = std::sqrt(std::max(0.0, gradient2 / area - mean_gradient.squaredNorm()));
   // Step 5c: a curved patch (its overlap gradient turns over it) takes the peak of its moments
   // instead of its deepest corner; w is how curved, times the estimate's validity.
-  // The moments see only the polygons: a patch reaching beyond their range (members without a
-  // polygon: an outer ring of facets tilted past kParallelFaceAngle, an edge's steep side) is cut
-  // off and its moments' peak is not its own, so it keeps the deepest corner.
-  const double outside = member_overlap > 0.0 ? plain_overlap / member_overlap : 0.0;
-  // And only a patch that spans many facets is a smooth surface seen through its facets: one
-  // or two facets (a vertex, an edge, a coarse ball) are the surface itself, and their deepest
-  // corner is its peak. Facets spanned: n = M1 / (D f), f the polygons' overlap-weighted
-  // smaller triangle area (continuous as polygons enter at o = 0; a paraboloid's n is half
-  // the facets under its area); n has a known gradient (dM1 = A do(c_A), dD = do(p_D)), so the
-  // blend's own gradient enters the force (below) and a ball passing through it keeps its
-  // energy.
-  const double facet_scale = weight > 0.0 ? facet_area / weight : 0.0;
-  const double facets = facet_scale > 0.0 && D > 0.0 ? weight / (D * facet_scale) : 0.0;
-  const double facets_u = (facets - kCurvedFacetsFrom) / (kCurvedFacetsFull - kCurvedFacetsFrom);
-  const double other_weights =
-      curved_weight(spread) * (1.0 - smoothstep(outside / kCurvedOutsideShare)) *
-      (1.0 - plain_share);
-  double w = other_weights * smoothstep(facets_u);
+  const double curved_base = curved_weight(spread) * (1.0 - plain_share);
+  double w = 0.0, other_weights = 0.0, facets_u = 0.0, facet_scale = 0.0;
   CurvedPeak curved;
-  Vector3d curved_area_centre, curved_pressure_centre, curved_second_centre;
-  if (w > 0.0) {
-    OverlapMoments mo;
+  OverlapMoments mo;
+  Vector3d curved_area_centre, curved_pressure_centre, curved_second_centre, curved_normal;
+  if (curved_base > 0.0) {
     for (std::size_t k = 0; k < num_polygons; ++k)
       add_overlap_moments(polygons[k], layer, deepest_normal, s.point, mo);
+    // A ball's cap reaches facets tilted past the 10 degrees of step 5b (at an overlap of
+    // 1.5 % of its radius): their polygons up to kCurvedFacetAngle enter the moments only.
+    // What is left without a polygon (a steep side, an edge's other face) cuts the patch off,
+    // and its moments' peak is not its own: it keeps the deepest corner.
+    ContactPolygon wide;
+    // (A member whose triangles are within that angle but whose polygon is empty -- a facet
+    // over one wall triangle seen through the next one's edge -- is no part of the field.)
+    for (int i : plain) {
+      const Raw &r = raw[i];
+      const TriangleSoA &ta = *faces.a, &tb = *faces.b;
+      if (!contact_polygon(ta.vertex(r.tri_a, 0), ta.vertex(r.tri_a, 1), ta.vertex(r.tri_a, 2),
+                           tb.vertex(r.tri_b, 0), tb.vertex(r.tri_b, 1), tb.vertex(r.tri_b, 2),
+                           r.normal, layer, wide, kCurvedFacetAngle))
+        continue;
+      plain_overlap -= r.overlap;
+      if (wide.weight > 0.0 && wide.area > kPatchAreaRounding * wide.min_triangle_area)
+        add_overlap_moments(wide, layer, deepest_normal, s.point, mo);
+    }
+    const double outside = member_overlap > 0.0 ? std::max(0.0, plain_overlap) / member_overlap
+                                                : 0.0;
+    // And only a patch that spans many facets is a smooth surface seen through its facets: one
+    // or two facets (a vertex, an edge, a coarse ball) are the surface itself, and their
+    // deepest corner is its peak. Facets spanned: n = M1 / (D f), f the polygons'
+    // overlap-weighted smaller triangle area (continuous as polygons enter at o = 0; a
+    // paraboloid's n is half the facets under its area); n has a known gradient (dM1 =
+    // A do(c_A), dD = do(p_D)), so the blend's own gradient enters the force (below) and a
+    // ball passing through it keeps its energy.
+    facet_scale = weight > 0.0 ? facet_area / weight : 0.0;
+    // The angle between neighbouring facets, phi = h / R: a body's curvature 1 / R from how
+    // its normal turns over the patch's radius a (a sphere's cap: RMS deviation a /
+    // (sqrt(2) R)), the more curved of the two bodies, h the facets' size. A fine ball (a
+    // 20480-triangle icosphere: 0.04) is a smooth surface seen through facets; a coarse one
+    // (1280: 0.15) or a polyhedron's corner is its facets, whatever the depth (a coarse ball
+    // sunk deep spans many facets).
+    double facet_angle = 0.0;
+    if (mo.area > 0.0 && facet_scale > 0.0) {
+      const double turn_a = 1.0 - (mo.area_normal_a / mo.area).squaredNorm();
+      const double turn_b = 1.0 - (mo.area_normal / mo.area).squaredNorm();
+      const double spread_body = std::sqrt(std::max(0.0, std::max(turn_a, turn_b)));
+      const double radius = std::sqrt(mo.area / M_PI);
+      const double h = std::sqrt(4.0 * facet_scale / std::sqrt(3.0));
+      facet_angle = std::sqrt(2.0) * spread_body * h / radius;
+    }
+    const double fine =
+        1.0 - smoothstep((facet_angle - kCurvedFineAngle) / kCurvedFineAngle);
+    const double facets = facet_scale > 0.0 && D > 0.0 ? mo.m1 / (D * facet_scale) : 0.0;
+    facets_u = (facets - kCurvedFacetsFrom) / (kCurvedFacetsFull - kCurvedFacetsFrom);
     curved = curved_peak(mo.area, mo.m1, mo.m2, mo.m3);
-    w *= curved.validity;
+    other_weights =
+        curved_base * (1.0 - smoothstep(outside / kCurvedOutsideShare)) * curved.validity * fine;
+    w = other_weights * smoothstep(facets_u);
     if (w > 0.0) {
       curved_area_centre = s.point + mo.area1 / mo.area;
       curved_pressure_centre = s.point + mo.first1 / mo.m1;
       curved_second_centre = s.point + mo.second1 / mo.m2;
+      // The direction of the peak's gradient under translation (OverlapMoments).
+      const Vector3d n = curved.a_area * mo.area_normal / mo.area +
+                         curved.a_pressure * mo.m1_normal / mo.m1 +
+                         curved.a_second * mo.m2_normal / mo.m2;
+      const double len = n.norm();
+      curved_normal = std::isfinite(len) && len > 0.5 ? Vector3d(n / len) : deepest_normal;
     }
   }
   if ((beta > 0.0 || w > 0.0) && plain_share < 1.0) {
@@ -406,8 +450,8 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
       const double dw_dn = other_weights * 6.0 * facets_u * (1.0 - facets_u) /
                            (kCurvedFacetsFull - kCurvedFacetsFrom);
       const double jump = (1.0 - b) * (phi * phi - D * D) * dw_dn;
-      blend_area = jump * area / (D * facet_scale);
-      blend_deep = -jump * weight / (D * D * facet_scale);
+      blend_area = jump * mo.area / (D * facet_scale);
+      blend_deep = -jump * mo.m1 / (D * D * facet_scale);
     }
     const double a_deep = 2.0 * (1.0 - b) * (1.0 - w) * D +
                           q_minus * slope * (1.0 - kFlatPatchBand * r) / (kFlatPatchBand * D) +
@@ -421,6 +465,7 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
     Vector3d moment = a_deep * deepest + a_area * area_centre + a_pressure * pressure_centre;
     double sum = a_deep + a_area + a_pressure;
     if (w > 0.0) {
+      moment += blend_area * (curved_area_centre - area_centre); // dn acts at the moments' c_A
       moment += curved_scale * (curved.a_area * curved_area_centre +
                                 curved.a_pressure * curved_pressure_centre +
                                 curved.a_second * curved_second_centre);
@@ -430,7 +475,9 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
       p.point = moment / sum;
       p.overlap = 0.5 * sum;
       p.energy_overlap = std::sqrt(std::max(0.0, (1.0 - b) * x_law + b * mean_square));
-      const Vector3d blended = (1.0 - b) * deepest_normal + b * poly_normal;
+      const Vector3d point_normal =
+          w > 0.0 ? Vector3d((1.0 - w) * deepest_normal + w * curved_normal) : deepest_normal;
+      const Vector3d blended = (1.0 - b) * point_normal + b * poly_normal;
       p.normal = blended.normalized();
     }
   }
@@ -532,7 +579,7 @@ void reduce_clusters(std::vector<Raw> &raw, double layer, const ReductionParams 
     for (int c = first_class; c < static_cast<int>(seeds.size()); ++c)
       if (alive[c]) {
         out.push_back(make_point(raw, group, cls, absorbed, c, seeds[c], layer, ref, faces,
-                                 work.polygons, work.polygon_layers));
+                                 work.polygons, work.polygon_layers, work.plain));
       }
     begin = end;
   }

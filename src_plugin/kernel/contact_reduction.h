@@ -128,28 +128,42 @@
 //     ball, so the deepest pair's force has a lever about the centre (kn D R sin(turn)) that
 //     refining the mesh does not remove (an impact turns the ball by far less than a facet):
 //     a frictionless head-on impact of a 20480-triangle icosphere left it spinning at 6 % of
-//     the impact speed over R (validation/contact/oblique). Where the polygons' overlap
-//     gradients turn over the patch (curved_weight(spread), the complement of step 6's flat
-//     test), the patch is whole (members without a polygon carry under kCurvedOutsideShare of
-//     the class's raw overlap) and it spans several facets (n = M1 / (D f) from
-//     kCurvedFacetsFrom to kCurvedFacetsFull, f the polygons' overlap-weighted smaller triangle
-//     area), the deepest overlap D is replaced by the peak of the patch's overlap moments,
-//       Phi = M2 M3 / (3 M2^2 - 2 M1 M3),  M_p = integral of o^p over the polygons
+//     the impact speed over R (validation/contact/oblique), and two balls pressed together
+//     pushed along a facet's normal, 0.012-0.021 rad off their line of centres. Where
+//       - the polygons' overlap gradients turn over the patch (curved_weight(spread), the
+//         complement of step 6's flat test),
+//       - the patch is whole: its members' polygons up to kCurvedFacetAngle (45 degrees; a
+//         ball's cap passes step 5b's 10 degrees at an overlap of 1.5 % of R) cover all but
+//         kCurvedOutsideShare of the class's raw overlap (a steep side or an edge's other face
+//         cuts it off),
+//       - its bodies are finely faceted: the angle between neighbouring facets, estimated as
+//         sqrt(2) x the RMS turn of the more curved body's normal over the patch x the facet
+//         size / the patch radius, is below kCurvedFineAngle (0.08; to 0 at twice it: a
+//         1280-triangle icosphere, 0.15, or a polyhedron's corner is its facets at any depth),
+//       - and the patch spans several facets (n = M1 / (D f) from kCurvedFacetsFrom to
+//         kCurvedFacetsFull, f the polygons' overlap-weighted smaller triangle area),
+//     the deepest overlap D is replaced by the peak of the patch's overlap moments,
+//       Phi = M2 M3 / (3 M2^2 - 2 M1 M3),  M_p = integral of o^p over those polygons
 //     (contact_polygon.h curved_peak: exactly D for any profile homogeneous about its peak --
 //     a vertex's cone, an edge's wedge, a paraboloid -- and, being an integral, blind to which
 //     vertex is deepest). The moments are taken along one direction (the deepest normal) with
 //     every corner on a's surface, so the polygons of neighbouring facets add up to one field.
-//     With w the product of those three weights, X = (1 - w) D^2 + w Phi^2 replaces D^2 in
-//     step 5b's Omega, and its gradient acts at the area centre, the centre of pressure and the
-//     centroid of o^2 (dM_p = p M_(p-1) do(c_(p-1)): curved_peak's weights) plus the gradient
-//     of w through n (dn from dM1 and dD; f and the other two weights held fixed, they are 1 or
-//     0 on a ball), so a ball passing through the blend keeps its energy (the oblique head-on
-//     impacts return vn to 2e-5). A vertex, an edge or a coarse ball (a patch of one or two
-//     facets) keeps the deepest pair exactly; a face on a face (gradients agree) keeps step
-//     5b. The normal is step 5b's: the deepest pair's, exact for a wall.
-//     What it does not fix: the extrapolated point (weights about 6, -21, 16 for a paraboloid)
-//     carries the facets' discretisation to the lever, amplified; with kt = kn in the sticking
-//     regime a level-5 ball's rebound spin is still 8 % off (validation/contact/oblique).
+//     With w the product of those weights, X = (1 - w) D^2 + w Phi^2 replaces D^2 in step 5b's
+//     Omega; its gradient acts at the moments' area centre, centre of pressure and centroid of
+//     o^2 (dM_p = p M_(p-1) do(c_(p-1)): curved_peak's weights), plus the gradient of w through
+//     n (dn from dM1 and dD; f and the other weights held fixed: they are 1 or 0 on a ball), so
+//     a ball passing through the blend keeps its energy (oblique head-on impacts return vn to
+//     2e-5). Its direction is the peak's gradient under translation: a translation d of b
+//     changes o by -n_b . d, so the normal is (sum over the moments' weights of the integrals
+//     of o^(p-1) n_b) normalised -- a wall's normal exactly, and for two balls the line of
+//     centres to 0.2-2 mrad (tests CurvedContact.*). A vertex, an edge or a coarse ball keeps
+//     the deepest pair exactly; a face on a face (gradients agree) keeps step 5b.
+//     What it does not fix: Phi of a faceted cap sits below the circumscribed sphere's overlap
+//     by about the mean facet sag (the deepest vertex by 0 to the full sag), and its gradient
+//     point is an extrapolation (weights about 6, -21 and 16 for a paraboloid) that carries the
+//     facets' discretisation to the lever amplified: a level-5 ball's head-on spin is 0.6 %,
+//     not 0, and with kt = kn in the sticking regime its rebound spin is still 8 % off
+//     (validation/contact/oblique).
 //  6. The patch's extent, for the rocking damper and the twisting friction of contact_model.h.
 //     The force of a contact acts at one point, so a rotation of the two bodies about that
 //     point (about an axis in the contact plane: one face rocking on the other) gives no normal
@@ -303,6 +317,7 @@ struct ReductionWorkspace {
   std::vector<int> parent, order, label, cls, absorbed, seeds, alive, group;
   std::vector<ContactPolygon> polygons; // one class's contact polygons
   std::vector<double> polygon_layers;   // per polygon: the layer, or -1 (intersecting, sunk)
+  std::vector<int> plain;               // one class's members without a polygon (step 5c)
 };
 
 // Reduces `n` triangle-pair contacts of one pair (entries with overlap <= 0 are ignored) and

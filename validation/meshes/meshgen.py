@@ -38,6 +38,23 @@ def icosphere(level, radius):
     return [tuple(radius * x for x in p) for p in v], f
 
 
+def mass_inertia(verts, faces, density):
+    """Mass and the mean of the three moments of inertia about the origin's axes (for an
+    icosphere centred at the origin: about any axis through its centre) of the closed mesh
+    (verts, faces) of uniform density: signed tetrahedra from the origin."""
+    volume, second = 0.0, [0.0, 0.0, 0.0]  # integral of x_k^2 dV
+    for f in faces:
+        a, b, c = (verts[i] for i in f)
+        vol = (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+               a[2] * (b[0] * c[1] - b[1] * c[0])) / 6.0
+        volume += vol
+        for k in range(3):
+            x0, x1, x2 = a[k], b[k], c[k]
+            second[k] += vol / 10.0 * (x0 * x0 + x1 * x1 + x2 * x2 + x0 * x1 + x1 * x2 + x0 * x2)
+    inertia = (2.0 * sum(second)) / 3.0  # mean of I_xx, I_yy, I_zz = (sum of pairs) / 3
+    return density * volume, density * inertia
+
+
 def cube(n, side):
     """Each face an n x n grid of squares, two triangles each; centred at the origin."""
     verts, index, faces = [], {}, []

@@ -48,17 +48,9 @@ def name_of(c):
 
 
 def mesh_mass_inertia(level):
-    """Mass and moment of inertia about an axis through the centroid (isotropic for an
-    icosphere) of the closed mesh, density RHO: tetrahedra from the origin (the centre)."""
-    verts, faces = meshgen.icosphere(level, R)
-    v = np.array(verts)
-    a, b, c = (v[[f[k] for f in faces]] for k in range(3))
-    vol = np.einsum("ij,ij->i", a, np.cross(b, c)) / 6.0
-
-    def second(k):  # integral of x_k^2 dV
-        x0, x1, x2 = a[:, k], b[:, k], c[:, k]
-        return (vol / 10.0 * (x0 * x0 + x1 * x1 + x2 * x2 + x0 * x1 + x1 * x2 + x0 * x2)).sum()
-    return RHO * vol.sum(), RHO * (second(0) + second(2))
+    """Mass and moment of inertia about an axis through the centre of the closed mesh,
+    density RHO (meshgen.mass_inertia)."""
+    return meshgen.mass_inertia(*meshgen.icosphere(level, R), RHO)
 
 
 def run_case(exe, work, c, reuse):
