@@ -364,11 +364,22 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
   // Step 5c: a curved patch (its overlap gradient turns over it) takes the peak of its moments
   // instead of its deepest corner; w is how curved, times the estimate's validity.
   const double curved_base = curved_weight(spread) * (1.0 - plain_share);
-  double w = 0.0, other_weights = 0.0, facets_u = 0.0, facet_scale = 0.0;
+  // Only a patch that spans many facets is a smooth surface seen through its facets: one or
+  // two facets (a vertex, an edge, a rock's corner) are the surface itself, and their deepest
+  // corner is its peak. Facets spanned by the polygons of step 5b: n = M1 / (D f), f their
+  // overlap-weighted smaller triangle area (continuous as polygons enter at o = 0; a
+  // paraboloid's n is half the facets under its area). n has a known gradient (dM1 =
+  // A do(c_A), dD = do(p_D), exact while the patch lies within the polygons' 10 degrees, as it
+  // does while n is small), so the blend's own gradient enters the force (below) and a ball
+  // passing through it keeps its energy.
+  const double facet_scale = weight > 0.0 ? facet_area / weight : 0.0;
+  const double facets = facet_scale > 0.0 && D > 0.0 ? weight / (D * facet_scale) : 0.0;
+  const double facets_u = (facets - kCurvedFacetsFrom) / (kCurvedFacetsFull - kCurvedFacetsFrom);
+  double w = 0.0, other_weights = 0.0;
   CurvedPeak curved;
   OverlapMoments mo;
   Vector3d curved_area_centre, curved_pressure_centre, curved_second_centre, curved_normal;
-  if (curved_base > 0.0) {
+  if (curved_base > 0.0 && facets_u > 0.0) {
     for (std::size_t k = 0; k < num_polygons; ++k)
       add_overlap_moments(polygons[k], layer, deepest_normal, s.point, mo);
     // A ball's cap reaches facets tilted past the 10 degrees of step 5b (at an overlap of
@@ -391,14 +402,6 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
     }
     const double outside = member_overlap > 0.0 ? std::max(0.0, plain_overlap) / member_overlap
                                                 : 0.0;
-    // And only a patch that spans many facets is a smooth surface seen through its facets: one
-    // or two facets (a vertex, an edge, a coarse ball) are the surface itself, and their
-    // deepest corner is its peak. Facets spanned: n = M1 / (D f), f the polygons'
-    // overlap-weighted smaller triangle area (continuous as polygons enter at o = 0; a
-    // paraboloid's n is half the facets under its area); n has a known gradient (dM1 =
-    // A do(c_A), dD = do(p_D)), so the blend's own gradient enters the force (below) and a
-    // ball passing through it keeps its energy.
-    facet_scale = weight > 0.0 ? facet_area / weight : 0.0;
     // The angle between neighbouring facets, phi = h / R: a body's curvature 1 / R from how
     // its normal turns over the patch's radius a (a sphere's cap: RMS deviation a /
     // (sqrt(2) R)), the more curved of the two bodies, h the facets' size. A fine ball (a
@@ -416,8 +419,6 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
     }
     const double fine =
         1.0 - smoothstep((facet_angle - kCurvedFineAngle) / kCurvedFineAngle);
-    const double facets = facet_scale > 0.0 && D > 0.0 ? mo.m1 / (D * facet_scale) : 0.0;
-    facets_u = (facets - kCurvedFacetsFrom) / (kCurvedFacetsFull - kCurvedFacetsFrom);
     curved = curved_peak(mo.area, mo.m1, mo.m2, mo.m3);
     other_weights =
         curved_base * (1.0 - smoothstep(outside / kCurvedOutsideShare)) * curved.validity * fine;
@@ -450,8 +451,8 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
       const double dw_dn = other_weights * 6.0 * facets_u * (1.0 - facets_u) /
                            (kCurvedFacetsFull - kCurvedFacetsFrom);
       const double jump = (1.0 - b) * (phi * phi - D * D) * dw_dn;
-      blend_area = jump * mo.area / (D * facet_scale);
-      blend_deep = -jump * mo.m1 / (D * D * facet_scale);
+      blend_area = jump * area / (D * facet_scale);
+      blend_deep = -jump * weight / (D * D * facet_scale);
     }
     const double a_deep = 2.0 * (1.0 - b) * (1.0 - w) * D +
                           q_minus * slope * (1.0 - kFlatPatchBand * r) / (kFlatPatchBand * D) +
@@ -465,7 +466,6 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
     Vector3d moment = a_deep * deepest + a_area * area_centre + a_pressure * pressure_centre;
     double sum = a_deep + a_area + a_pressure;
     if (w > 0.0) {
-      moment += blend_area * (curved_area_centre - area_centre); // dn acts at the moments' c_A
       moment += curved_scale * (curved.a_area * curved_area_centre +
                                 curved.a_pressure * curved_pressure_centre +
                                 curved.a_second * curved_second_centre);
