@@ -336,6 +336,7 @@ PairForceResult after_kernel(const Body &a, const Body &b, const InteractionSett
       recommended_link_length(a.longest_edge, b.longest_edge, a.epsilon, b.epsilon);
   params.min_width = std::min(a.min_edge, b.min_edge);
   params.reference_direction = reference_direction(a, b);
+  params.distance_tolerance = certified_tolerance(s.distance, a.epsilon, b.epsilon);
   reduce_contacts(scratch.triangle_contacts.data(),
                   static_cast<int>(scratch.triangle_contacts.size()), *a.triangles, a.epsilon,
                   *b.triangles, b.epsilon, params, scratch.reduction, scratch.points);

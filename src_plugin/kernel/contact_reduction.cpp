@@ -198,7 +198,7 @@ double face_weight_of(double spread, double tilt) {
 ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &members,
                         const std::vector<int> &cls, const std::vector<int> &absorbed, int c,
                         int seed, double layer, const Vector3d &ref, const Faces &faces,
-                        std::vector<ContactPolygon> &polygons,
+                        double tolerance, std::vector<ContactPolygon> &polygons,
                         std::vector<double> &polygon_exact, std::vector<int> &plain) {
   ContactPoint p;
   // `polygons` only grows: entries [0, num_polygons) are this class's. Reusing the slots keeps
@@ -210,6 +210,12 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
   double deepest_plain = -std::numeric_limits<double>::infinity(); // members without a polygon
   double D_poly = 0.0; // the polygon members' deepest overlap, exact (step 5b)
   double plain_overlap = 0.0, member_overlap = 0.0; // step 5c: how much lies outside polygons
+  // A member's exact overlap lies at most `tolerance` above its kernel overlap (and never below
+  // it beyond rounding), so one that stays below the deepest exact one found so far by more
+  // than that cannot be the deepest: its triangle distance is not recomputed. The members come
+  // deepest first, so mostly only the first is.
+  const double exact_slack =
+      tolerance + 1e-9 * layer + 1e-13 * raw[seed].point.cwiseAbs().maxCoeff();
   p.min_distance = std::numeric_limits<double>::infinity();
   for (int i : members) {
     if (cls[i] != c)
@@ -225,7 +231,8 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
     if (member_polygon(r, faces, layer, polygons[num_polygons])) { // filled in place
       ++num_polygons;
       polygon_exact.push_back(!(r.intersecting || r.overlap > layer) ? layer : -1.0);
-      D_poly = std::max(D_poly, exact_overlap(r, faces, layer));
+      if (!(r.overlap + exact_slack < D_poly))
+        D_poly = std::max(D_poly, exact_overlap(r, faces, layer));
     } else {
       deepest_plain = std::max(deepest_plain, r.overlap);
       plain_overlap += r.overlap;
@@ -378,7 +385,8 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
   double w = 0.0, other_weights = 0.0;
   CurvedPeak curved;
   OverlapMoments mo;
-  Vector3d curved_area_centre, curved_pressure_centre, curved_second_centre, curved_normal;
+  Vector3d curved_area_centre = Vector3d::Zero(), curved_pressure_centre = Vector3d::Zero(),
+           curved_second_centre = Vector3d::Zero(), curved_normal = Vector3d::Zero();
   if (curved_base > 0.0 && facets_u > 0.0) {
     for (std::size_t k = 0; k < num_polygons; ++k)
       add_overlap_moments(polygons[k], layer, deepest_normal, s.point, mo);
@@ -493,9 +501,10 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
   p.patch_area = area;
   p.damping_point = s.point + area1 / area;
   // The mean distance of the patch from the point, over the same polygons, projected onto the
-  // contact plane (numerator and denominator alike).
+  // contact plane (numerator and denominator alike). Only a face-like contact twists against
+  // its patch (contact_force.h), so a point-like one skips the integral (its asinh per edge).
   DistanceIntegral dist;
-  for (std::size_t k = 0; k < num_polygons; ++k) {
+  for (std::size_t k = 0; p.face_weight > 0.0 && k < num_polygons; ++k) {
     const ContactPolygon &poly = polygons[k];
     const DistanceIntegral one =
         polygon_distance_integral(poly.vertices, poly.num_vertices, p.point, p.normal);
@@ -579,7 +588,7 @@ void reduce_clusters(std::vector<Raw> &raw, double layer, const ReductionParams 
     for (int c = first_class; c < static_cast<int>(seeds.size()); ++c)
       if (alive[c]) {
         out.push_back(make_point(raw, group, cls, absorbed, c, seeds[c], layer, ref, faces,
-                                 work.polygons, work.polygon_layers, work.plain));
+                                 params.distance_tolerance, work.polygons, work.polygon_layers, work.plain));
       }
     begin = end;
   }

@@ -185,7 +185,9 @@
 //                             / A over the polygons projected onto the contact plane (closed
 //                             form per polygon edge, contact_polygon.h polygon_distance_integral):
 //                             the lever of Coulomb friction spread over a uniformly pressed
-//                             region turning about the point (mu F_n r_mean);
+//                             region turning about the point (mu F_n r_mean); 0 when
+//                             face_weight is 0 (a point-like contact does not twist against
+//                             its patch, so the integral is skipped);
 //       face_weight         = how much the contact is a flat region on a flat region (times
 //                             one minus the share of members without a polygon): 1 when the
 //                             polygons' overlap gradients (the relative slope of the two
@@ -247,6 +249,7 @@
 #include <Eigen/Core>
 
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace tri {
@@ -295,6 +298,11 @@ struct ReductionParams {
   double min_width = 0.0; // m, paper_min_width: the minimum mesh width of the two meshes
   // Unit, from a towards b; used only where a normal is otherwise undefined (see above).
   Eigen::Vector3d reference_direction = Eigen::Vector3d::UnitZ();
+  // m, how far the contacts' distances may lie above the exact ones (the hybrid kernel's
+  // certified tolerance; 0 for brute force): step 5b then recomputes exactly only the polygon
+  // members whose overlap could still be the deepest. Infinity (unknown: the unchecked penalty
+  // kernel, tests): every one. Never changes a result, only what it costs.
+  double distance_tolerance = std::numeric_limits<double>::infinity();
 };
 
 // The link length that keeps every contact patch connected: 2 * min(longest edge of a,

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <stdexcept>
 
 #ifdef _OPENMP
@@ -144,6 +145,20 @@ void check_options(const ContactOptions &opt) {
 }
 
 } // namespace
+
+double certified_tolerance(const ContactOptions &opt, double eps_a, double eps_b) {
+  switch (opt.kernel) {
+  case DistanceKernel::BruteForce:
+  case DistanceKernel::BruteForceScalar:
+    return 0.0;
+  case DistanceKernel::Hybrid:
+  case DistanceKernel::BatchedHybrid:
+    return hybrid_settings(opt, eps_a, eps_b).tolerance;
+  case DistanceKernel::Penalty:
+    break;
+  }
+  return std::numeric_limits<double>::infinity(); // unchecked
+}
 
 int find_candidate_pairs(const TriangleSoA &a, const TriangleSoA &b, double margin,
                          const ContactOptions &opt, ContactWorkspace &ws,

@@ -142,6 +142,9 @@ void contacts_among_candidates(const TriangleSoA &a, double eps_a, const Triangl
 // as contacts_among_candidates does. Only for the unbatched hybrid without threads inside
 // the pair (can_queue_candidates); the contacts are bitwise contacts_among_candidates'.
 bool can_queue_candidates(const ContactOptions &opt);
+// How far above the exact distance a contact's distance from this kernel may lie (m): the
+// hybrid's certified tolerance, 0 for brute force, infinity for the unchecked penalty.
+double certified_tolerance(const ContactOptions &opt, double eps_a, double eps_b);
 HybridJob queue_candidates(const TriangleSoA &a, double eps_a, const TriangleSoA &b, double eps_b,
                            const ContactOptions &opt, const TrianglePairIndex *pairs, int count,
                            ContactStats &stats);

@@ -11,12 +11,16 @@ RigidMotion fit_rigid_motion(const Eigen::Vector3d *points, const Eigen::Vector3
   RigidMotion m;
   if (n <= 0)
     return m;
+  bool moving = false;
   for (int k = 0; k < n; ++k) {
     m.centre += points[k];
     m.velocity += velocities[k];
+    moving = moving || !(velocities[k].array() == 0.0).all();
   }
   m.centre /= n;
   m.velocity /= n;
+  if (!moving)
+    return m; // a static mesh (most walls, every step): the fit below is M omega = 0
   Eigen::Matrix3d moment = Eigen::Matrix3d::Zero();
   Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
   double spread = 0.0;

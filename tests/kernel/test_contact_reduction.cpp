@@ -740,6 +740,51 @@ TEST(ContactReductionPoint, TiltedCubeKeepsItsEdgeOrVertexPoint) {
       }
 }
 
+// Step 5b recomputes the exact triangle distance only of the polygon members that could be the
+// deepest (ReductionParams::distance_tolerance): with the hybrid's certified tolerance the
+// result is bitwise the one that recomputes every member. Faces flat and tilted by up to 8
+// degrees (several polygon members of different depth), meshed 2 to 32 triangles per face,
+// on planes of 2 and 512 triangles, yawed.
+TEST(ContactReductionPoint, SkippingMembersThatCannotBeDeepestChangesNothing) {
+  const Vector3d xy(0.13e-3, -0.27e-3, 0);
+  int compared = 0, with_polygons = 0;
+  for (const double tilt : {0.0, 0.002, 0.03, 0.14})
+    for (const double yaw_angle : {0.0, 0.7})
+      for (const int k : {1, 4})
+        for (const int plane_k : {1, 16}) {
+          const Matrix3d R = (Eigen::AngleAxisd(yaw_angle, Vector3d::UnitZ()) *
+                              Eigen::AngleAxisd(tilt, Vector3d(1, 0.4, 0).normalized()))
+                                 .toRotationMatrix();
+          Mesh a;
+          place_cube(a, k, xy, 0.3 * kLayer, R);
+          const Mesh b = plane(1.5 * kSide, plane_k);
+          const auto raw = contacts_by(2, a, b);
+          tri::ReductionParams every = params_for(kSide / k, 3 * kSide / plane_k);
+          tri::ReductionParams pruned = every;
+          tri::ContactOptions opt; // the hybrid kernel contacts_by(2) ran with
+          pruned.distance_tolerance = tri::certified_tolerance(opt, kEps, kEps);
+          ASSERT_TRUE(std::isinf(every.distance_tolerance)); // the default recomputes all
+          ASSERT_GT(pruned.distance_tolerance, 0.0);
+          const auto want = tri::reduce_contacts(raw, soa_of(a), kEps, soa_of(b), kEps, every);
+          const auto got = tri::reduce_contacts(raw, soa_of(a), kEps, soa_of(b), kEps, pruned);
+          ASSERT_EQ(got.size(), want.size());
+          for (std::size_t c = 0; c < got.size(); ++c) {
+            for (int i = 0; i < 3; ++i) {
+              EXPECT_EQ(got[c].point[i], want[c].point[i]);
+              EXPECT_EQ(got[c].normal[i], want[c].normal[i]);
+            }
+            EXPECT_EQ(got[c].overlap, want[c].overlap);
+            EXPECT_EQ(got[c].energy_overlap, want[c].energy_overlap);
+            EXPECT_EQ(got[c].face_weight, want[c].face_weight);
+            EXPECT_EQ(got[c].patch_mean_radius, want[c].patch_mean_radius);
+            ++compared;
+            with_polygons += want[c].patch_area > 0.0;
+          }
+        }
+  EXPECT_GE(compared, 32);
+  EXPECT_GE(with_polygons, 24); // the path under test: face contacts with polygons
+}
+
 // Step 6: the patch of a face contact is the faces' overlap region for every meshing -- the
 // overhanging cube's rectangle [x0, x1] x [y0, y1]: area wx wy, and about the contact point
 // (its centre) integral x^2 dA = wy wx^3 / 12, y^2: wx wy^3 / 12, xy: 0, nothing along z --
