@@ -44,6 +44,7 @@ PairForceResult pair_contact_force(const std::vector<ContactPoint> &contacts, co
     const double f_n = normal_force(coeff, c.overlap, v_n, m_eff);
     const double f_spring = patch ? normal_force(coeff, c.overlap, 0.0, m_eff) : f_n;
     const double f_damper = f_n - f_spring;
+    r.elastic_energy += normal_elastic_energy(coeff, c.energy_overlap);
     const TwistPatch twist_patch = twist_patch_of(c);
     const double w_n = (b.omega - a.omega).dot(c.normal);
     Friction friction;

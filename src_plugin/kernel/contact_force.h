@@ -42,6 +42,7 @@ struct PairForceResult {
   double max_overlap = 0.0; // m, deepest penetration of the soft layers
   double min_distance = std::numeric_limits<double>::infinity(); // m, closest triangle pair
   bool intersecting = false; // some triangles intersect (the soft layer was overrun)
+  double elastic_energy = 0.0; // J, the normal springs' energy summed over the contact points
   // Set by body_interaction (penetration_depth.h): the combined soft layer eps_a + eps_b (m) and
   // the deepest the real surfaces may intersect, max_overlap - layer (m; infinity: no limit).
   double layer = 0.0;

@@ -42,6 +42,10 @@ double normal_force(const ContactCoefficients &c, double overlap, double v_n, do
   return c.limit_force ? std::max(f, 0.0) : f;
 }
 
+double normal_elastic_energy(const ContactCoefficients &c, double energy_overlap) {
+  return 0.5 * c.kn * energy_overlap * energy_overlap;
+}
+
 Vector3d tangential_force_history(const ContactCoefficients &c, const Vector3d &n,
                                   const Vector3d &v_t, double f_n, double m_eff, double dt,
                                   Vector3d &shear) {

@@ -78,6 +78,9 @@ double effective_mass(double mass_a, double mass_b);
 // Normal sub-model, hooke/stiffness: F_n = kn overlap - gamma_n v_n, with gamma_n = gamman
 // m_eff (or gamman with absolute_damping); clamped to >= 0 with limit_force. overlap in m.
 double normal_force(const ContactCoefficients &c, double overlap, double v_n, double m_eff);
+// Its spring's potential energy, J: 1/2 kn Omega, Omega = the contact point's energy_overlap
+// squared (contact_reduction.h: the spring force is the gradient of this energy).
+double normal_elastic_energy(const ContactCoefficients &c, double energy_overlap);
 
 // Tangential sub-model `history`. `shear` (m) is the contact's shear displacement, updated in
 // place:  shear += v_t dt;  shear -= (shear . n) n  (onto the current tangent plane);

@@ -19,6 +19,7 @@ void InteractionTally::add(const PairForceResult &r) {
   if (r.layer > 0.0)
     max_overlap_layers = std::max(max_overlap_layers, r.max_overlap / r.layer);
   max_depth_of_limit = std::max(max_depth_of_limit, r.depth_of_limit());
+  elastic_energy += r.elastic_energy;
 }
 
 InteractionTally &InteractionTally::operator+=(const InteractionTally &o) {
@@ -134,6 +135,14 @@ std::vector<StatColumn> make_columns() {
                            "body pairs of pairs_checked whose triangle pairs came from their kept "
                            "candidates, without a cull (the bodies moved less than its reach)",
                            [](Tally &t, int) { return &t.distance.candidates_kept; }));
+  // The contacts' potential energy, appended: with the kinetic energy, what a collision
+  // without damping or friction conserves.
+  StatColumn energy{"elastic_energy", "J",
+                    "normal springs' energy of the contact points, 1/2 kn energy_overlap^2 "
+                    "(with the kinetic energy, what an undamped frictionless collision conserves)",
+                    StatReduction::sum};
+  energy.length = [](Tally &t) { return &t.elastic_energy; };
+  c.push_back(energy);
   Tally probe;
   const char *base = reinterpret_cast<const char *>(&probe);
   for (StatColumn &column : c) {

@@ -201,8 +201,12 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
                 if (k + kPrefetchAhead < tasks_.size())
                   prefetch(tasks_[k + kPrefetchAhead]);
                 const Task &task = tasks_[k];
-                const tri::PairForceResult r =
-                    evaluate(task, scratch, stats, dt, update_history);
+                tri::PairForceResult r = evaluate(task, scratch, stats, dt, update_history);
+                // With newton off a pair with a ghost is evaluated by both owners' ranks (or,
+                // across a periodic boundary, twice on one): half its energy each, so that
+                // compute tri/stats sums every contact's energy once.
+                if (!newton && task.j >= nlocal)
+                  r.elastic_energy *= 0.5;
                 // The task's own bookkeeping, here on the threads rather than after the loop,
                 // once evaluate() has written its history back.
                 if (task.touching) { // the tangential history or the axis: LIGGGHTS keeps all

@@ -107,6 +107,33 @@ def test_contact_forces(ctx):
 ADAPT_LINE = re.compile(r"tri/adapt_dt: step (\d+): dt (\S+) -> (\S+) \((.*)\)")
 
 
+def test_elastic_energy(ctx):
+    """compute tri/stats' elastic_energy is the contacts' potential energy: two spinning rocks
+    colliding without damping or friction (in.contact_energy) keep the kinetic energy (compute
+    ke + compute tri/erotate) plus it constant at every step, while it takes a quarter of the
+    energy at the deepest point. On 2 ranks the pair straddles the subdomain boundary and is
+    evaluated on both (newton off): each counts half, so the sums agree."""
+    energies = {}
+    for ranks in (1, 2):
+        phase = f"ranks{ranks}"
+        run_deck(ctx, "in.contact_energy", {"px": ranks, "phase": phase}, ranks=ranks)
+        with open(os.path.join(ctx.work, f"energy_{phase}.txt")) as f:
+            rows = [[float(x) for x in l.split()[1:]] for l in f if l.startswith("energy")]
+        touching = [r for r in rows if r[2] > 0]
+        check(len(touching) > 100, f"{ranks} ranks: in contact on {len(touching)} steps only")
+        check(rows[-1][2] == 0, f"{ranks} ranks: the rocks did not separate")
+        e0 = rows[0][0] + rows[0][1]
+        peak = max(r[1] for r in rows) / e0
+        drift = max(abs(r[0] + r[1] - e0) for r in rows) / e0
+        print(f"{ranks} rank(s): elastic energy up to {peak:.3f} of the total, "
+              f"kinetic + elastic within {drift:.2e} of the start")
+        check(peak > 0.1, f"{ranks} ranks: the elastic energy peaks at {peak:.3g} of the total")
+        check(drift < 1e-4, f"{ranks} ranks: kinetic + elastic energy moved by {drift:.3g}")
+        energies[ranks] = [r[1] for r in rows]
+    worst = max(abs(a - b) for a, b in zip(energies[1], energies[2])) / max(energies[1])
+    check(worst < 1e-12, f"1 and 2 ranks: elastic energies differ by {worst:.3g} of the peak")
+
+
 def test_stats_and_adapt_dt(ctx):
     """compute tri/stats in thermo and fix tri/adapt_dt's rule on two approaching cubes. Thermo
     every step, so that every halving is checked against the closest distance of its step."""

@@ -421,6 +421,22 @@ TEST(RockingCouple, EqualsADashpotSpreadOverThePatch) {
   EXPECT_NEAR(got.dot(n), 0.0, 1e-12 * tau.norm());
 }
 
+// The result's elastic_energy (compute tri/stats): 1/2 kn energy_overlap^2 summed over the
+// points, whatever the damping, friction or force point; none for a pair apart.
+TEST(PairContactForce, ElasticEnergyIsTheSpringsPotential) {
+  ContactCoefficients c = material();
+  const BodyState a = body(Vector3d(0, 0, 0), Vector3d(0.1, 0, 0), Vector3d(0, 0, 30), 1e-3);
+  const BodyState b = body(Vector3d(0.004, 0, 0), Vector3d(-0.1, 0, 0), Vector3d(5, 0, 0), 2e-3);
+  ContactPoint p = point(Vector3d(0.002, 0, 0), Vector3d(1, 0, 0), 3e-5);
+  p.energy_overlap = 3e-5; // a point contact: the overlap itself
+  ContactPoint q = point(Vector3d(0.002, 0.001, 0), Vector3d(1, 0.1, 0).normalized(), 1e-5);
+  q.energy_overlap = 1.2e-5; // a flat patch: sqrt(Omega) differs from the force's overlap
+  const auto r = tri::pair_contact_force({p, q}, a, b, c, 1e-5, nullptr);
+  const double expected = 0.5 * c.kn * (3e-5 * 3e-5 + 1.2e-5 * 1.2e-5);
+  EXPECT_NEAR(r.elastic_energy, expected, 1e-15 * expected);
+  EXPECT_EQ(tri::pair_contact_force({}, a, b, c, 1e-5, nullptr).elastic_energy, 0.0);
+}
+
 // In pair_contact_force the couple is pure: the force is that of the same points without a
 // patch, torque_b changes by C and torque_a by -C, and the total angular momentum balance holds
 // about any point; the relative rotation loses energy.

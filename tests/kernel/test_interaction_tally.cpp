@@ -74,14 +74,18 @@ TEST(StatsTable, OneInteractionIsCountedAsDocumented) {
   touching.intersecting = true;
   touching.max_overlap = 1e-4;
   touching.min_distance = 0.0;
+  touching.elastic_energy = 2.5e-7;
   t.add(touching);
-  EXPECT_EQ(t.body_pairs_checked, 2);
-  EXPECT_EQ(t.body_pairs_in_contact, 1);
-  EXPECT_EQ(t.contacts_before, 9);
-  EXPECT_EQ(t.contacts_after, 2);
-  EXPECT_EQ(t.penetrations, 1);
+  t.add(touching);
+  EXPECT_EQ(t.body_pairs_checked, 3);
+  EXPECT_EQ(t.body_pairs_in_contact, 2);
+  EXPECT_EQ(t.contacts_before, 18);
+  EXPECT_EQ(t.contacts_after, 4);
+  EXPECT_EQ(t.penetrations, 2);
   EXPECT_EQ(t.max_overlap, 1e-4);
   EXPECT_EQ(t.min_distance, 0.0);
+  EXPECT_EQ(t.elastic_energy, 5e-7); // summed
+  EXPECT_EQ(t.elastic_energy, tri::stats_columns()[tri::stats_column_index("elastic_energy") - 1].value(t));
 }
 
 TEST(HistoryView, FlipsSignsIntoACopyAndBack) {
