@@ -103,6 +103,43 @@ def plane(half, n=1):
     return v, f
 
 
+def voxels(cells, side):
+    """The boundary of a union of cubes of edge `side` at integer cells (i, j, k): each exposed
+    cube face two triangles, outward. Cells that touch only along an edge or at a corner would
+    make it non-manifold; the shapes here (jacks, U shapes) share whole faces."""
+    cells = set(map(tuple, cells))
+    verts, index, faces = [], {}, []
+
+    def vid(p):
+        if p not in index:
+            index[p] = len(verts)
+            verts.append(tuple(side * c for c in p))
+        return index[p]
+
+    for cell in sorted(cells):
+        for axis in range(3):
+            for sign in (-1, 1):
+                nb = list(cell)
+                nb[axis] += sign
+                if tuple(nb) in cells:
+                    continue
+                u, w = (axis + 1) % 3, (axis + 2) % 3
+
+                def corner(a, b):
+                    p = list(cell)
+                    p[axis] += 1 if sign > 0 else 0
+                    p[u] += a
+                    p[w] += b
+                    return vid(tuple(p))
+                c00, c10, c11, c01 = corner(0, 0), corner(1, 0), corner(1, 1), corner(0, 1)
+                # (u, w, axis) is right-handed, so u x w points along +axis.
+                if sign > 0:
+                    faces += [(c00, c10, c11), (c00, c11, c01)]
+                else:
+                    faces += [(c00, c11, c10), (c00, c01, c11)]
+    return verts, faces
+
+
 def write_stl(path, verts, faces, name="mesh"):
     with open(path, "w") as out:
         out.write(f"solid {name}\n")

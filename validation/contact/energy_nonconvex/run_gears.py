@@ -1,14 +1,17 @@
 #!/usr/bin/python3
 """Energy across contact-class changes of non-convex bodies: two gears (8 teeth, the mesh of
-examples/falling) thrown at each other spinning, no damping, no friction, no gravity. The
-kinetic energy after they separate against before, over 4 time steps, for the default
-reduction (clusters) and the baseline `none` (one force per triangle contact: conservative
-by construction up to the integrator).
+examples/falling), two voxel jacks (a cube with an arm on each face, 7 cubes of 1 mm) or two
+voxel U shapes (7 cubes of 1 mm) thrown at each other spinning, no damping, no friction, no
+gravity. The kinetic energy after they separate against before, over 4 time steps, for the
+default reduction (clusters) and the baseline `none` (one force per triangle contact:
+conservative by construction up to the integrator).
 
   /usr/bin/python3 run_gears.py [--exe build/src_plugin/driver/liggghts-tri] [--work DIR] [--reuse]
+                                [--shapes gear jack u]
 
 Target (issue 10, item 4): |E_after / E_before - 1| <= 1e-4 at the default dt (1e-6 s here:
-contact time pi sqrt(m_eff / kn) = 0.14 ms, 140 steps) and shrinking at least linearly with dt.
+contact time pi sqrt(m_eff / kn) = 0.14 ms for the gears, 140 steps) and shrinking at least
+linearly with dt.
 Prints the table, writes energy_nonconvex.png next to this script.
 """
 import argparse
@@ -19,6 +22,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.abspath(os.path.join(HERE, "..", "..", ".."))
 sys.path.insert(0, os.path.join(REPO, "validation"))
 sys.path.insert(0, os.path.join(REPO, "tests", "decks"))
+sys.path.insert(0, os.path.join(REPO, "validation", "meshes"))
+import meshgen  # noqa: E402
 import valtools  # noqa: E402
 from decklib import snapshots  # noqa: E402
 
@@ -27,6 +32,24 @@ DTS = [2e-6, 1e-6, 5e-7, 2.5e-7]
 T_END = 6e-3  # s: they meet after about 1.5 ms and have separated by then
 SEEDS = [1, 2, 3]
 REDUCTIONS = ["clusters", "none"]
+# Voxel shapes, cells of 1 (mm after the deck's scale 0.001): a jack (a cube with an arm on
+# each face) and a U (three cubes wide, three deep).
+VOXELS = {
+    "jack": [(0, 0, 0)] + [tuple(s if k == a else 0 for k in range(3))
+                           for a in range(3) for s in (-1, 1)],
+    "u": [(0, 0, 0), (1, 0, 0), (2, 0, 0), (0, 1, 0), (0, 2, 0), (2, 1, 0), (2, 2, 0)],
+}
+NAMES = {"gear": "two gears (examples/falling/meshes/gear.stl, scale 0.001)",
+         "jack": "two voxel jacks (7 cubes of 1 mm: a cube with an arm on each face)",
+         "u": "two voxel U shapes (7 cubes of 1 mm, 3 x 3 mm)"}
+
+
+def mesh_file(shape, work):
+    if shape == "gear":
+        return GEAR
+    path = os.path.join(work, shape + ".stl")
+    meshgen.write_stl(path, *meshgen.voxels(VOXELS[shape], 1.0), name=shape)
+    return path
 
 
 def energy(rows):
@@ -37,19 +60,19 @@ def energy(rows):
     return e
 
 
-def run(exe, work, red, seed, dt, reuse):
-    out = "gears_%s_s%d_dt%g.dump" % (red, seed, dt)
+def run(exe, work, mesh, shape, red, seed, dt, reuse):
+    out = "%s_%s_s%d_dt%g.dump" % (shape, red, seed, dt)
     path = os.path.join(work, out)
     if not (reuse and os.path.exists(path)):
         valtools.run_deck(exe, os.path.join(HERE, "in.gears"),
-                          dict(gear=GEAR, seed=seed, red=red, dt=dt,
+                          dict(gear=mesh, seed=seed, red=red, dt=dt,
                                steps=int(round(T_END / dt)), out=out),
                           work, path + ".screen")
     snaps = snapshots(path)
     with open(os.path.join(work, "touch_" + out + ".txt")) as f:
         touch = [int(float(l)) for l in f if not l.startswith("#")]
     if not any(touch) or touch[-1] != 0:
-        sys.exit("%s: the gears did not meet, or are still in contact at the end" % out)
+        sys.exit("%s: the bodies did not meet, or are still in contact at the end" % out)
     return energy(snaps[-1][1]) / energy(snaps[0][1]) - 1.0
 
 
@@ -58,39 +81,54 @@ def main():
     ap.add_argument("--exe", default=valtools.default_exe())
     ap.add_argument("--work", default="/tmp/liggghts-tri-validation/energy_nonconvex")
     ap.add_argument("--reuse", action="store_true")
+    ap.add_argument("--shapes", nargs="+", default=["gear", "jack", "u"], choices=list(NAMES))
     args = ap.parse_args()
     exe = os.path.abspath(args.exe)
     os.makedirs(args.work, exist_ok=True)
-    err = {(red, seed, dt): run(exe, args.work, red, seed, dt, args.reuse)
-           for red in REDUCTIONS for seed in SEEDS for dt in DTS}
+    err = {}
+    for shape in args.shapes:
+        mesh = mesh_file(shape, args.work)
+        for red in REDUCTIONS:
+            for seed in SEEDS:
+                for dt in DTS:
+                    err[(shape, red, seed, dt)] = run(exe, args.work, mesh, shape, red, seed, dt,
+                                                      args.reuse)
     print(valtools.machine_line())
-    print("two gears (examples/falling/meshes/gear.stl, scale 0.001), density 2500, eps 0.1 mm, "
-          "kn 2000 N/m, no damping, no friction, relative speed 0.6 m/s, spinning")
+    print("density 2500, eps 0.1 mm, kn 2000 N/m, no damping, no friction, relative speed "
+          "0.6 m/s, spinning; " + "; ".join(NAMES[s] for s in args.shapes))
     print()
-    print("| reduction | orient seed | " + " | ".join("dE/E at dt %g s" % dt for dt in DTS)
-          + " | ratio dt 2e-6 / dt 2.5e-7 |")
-    print("|---|---|" + "---|" * len(DTS) + "---|")
-    for red in REDUCTIONS:
-        for seed in SEEDS:
-            e = [err[(red, seed, dt)] for dt in DTS]
-            ratio = abs(e[0]) / abs(e[-1]) if e[-1] != 0 else float("inf")
-            print("| %s | %d | " % (red, seed) + " | ".join("%+.2e" % x for x in e)
-                  + " | %.1f |" % ratio)
+    print("| bodies | reduction | orient seed | " +
+          " | ".join("dE/E at dt %g s" % dt for dt in DTS) + " | ratio dt 2e-6 / dt 2.5e-7 |")
+    print("|---|---|---|" + "---|" * len(DTS) + "---|")
+    for shape in args.shapes:
+        for red in REDUCTIONS:
+            for seed in SEEDS:
+                e = [err[(shape, red, seed, dt)] for dt in DTS]
+                ratio = abs(e[0]) / abs(e[-1]) if e[-1] != 0 else float("inf")
+                print("| %s | %s | %d | " % (shape, red, seed) +
+                      " | ".join("%+.2e" % x for x in e) + " | %.1f |" % ratio)
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, ax = plt.subplots(figsize=(6.5, 4.5))
-    for red, style in zip(REDUCTIONS, ("-o", "--s")):
-        for seed in SEEDS:
-            ax.loglog(DTS, [max(1e-12, abs(err[(red, seed, dt)])) for dt in DTS], style,
-                      label="%s, seed %d" % (red, seed))
-    ax.loglog(DTS, [1e-4 * dt / 1e-6 for dt in DTS], "k:", label="first order through 1e-4 at 1e-6")
-    ax.axhline(1e-4, color="gray", lw=0.8)
-    ax.set_xlabel("dt (s)")
-    ax.set_ylabel("|E_after / E_before - 1|")
-    ax.set_title("Two gears colliding, no damping or friction")
-    ax.legend(fontsize=7)
-    ax.grid(alpha=0.3, which="both")
+    fig, axes = plt.subplots(1, len(args.shapes), figsize=(4.2 * len(args.shapes), 4.2),
+                             sharey=True, squeeze=False)
+    for ax, shape in zip(axes[0], args.shapes):
+        for red, style in zip(REDUCTIONS, ("-o", "--s")):
+            for seed in SEEDS:
+                ax.loglog(DTS, [max(1e-12, abs(err[(shape, red, seed, dt)])) for dt in DTS],
+                          style, label="%s, seed %d" % (red, seed))
+        ax.loglog(DTS, [1e-4 * dt / 1e-6 for dt in DTS], "k:",
+                  label="first order through 1e-4 at 1e-6")
+        ax.axhline(1e-4, color="gray", lw=0.8)
+        ax.set_xlabel("dt (s)")
+        ax.set_xticks(DTS)
+        ax.set_xticklabels(["%g" % dt for dt in DTS])
+        ax.minorticks_off()
+        ax.set_title({"gear": "gears", "jack": "voxel jacks", "u": "voxel U shapes"}[shape])
+        ax.grid(alpha=0.3, which="both")
+    axes[0][0].set_ylabel("|E_after / E_before - 1|")
+    axes[0][0].legend(fontsize=6)
+    fig.suptitle("Non-convex bodies colliding, no damping or friction")
     fig.tight_layout()
     out = os.path.join(HERE, "energy_nonconvex.png")
     fig.savefig(out, dpi=110)
