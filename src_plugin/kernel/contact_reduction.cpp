@@ -588,7 +588,8 @@ void reduce_clusters(std::vector<Raw> &raw, double layer, const ReductionParams 
     for (int c = first_class; c < static_cast<int>(seeds.size()); ++c)
       if (alive[c]) {
         out.push_back(make_point(raw, group, cls, absorbed, c, seeds[c], layer, ref, faces,
-                                 params.distance_tolerance, work.polygons, work.polygon_layers, work.plain));
+                                 params.distance_tolerance, work.polygons, work.polygon_layers,
+                                 work.plain));
       }
     begin = end;
   }

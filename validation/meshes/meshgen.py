@@ -78,13 +78,18 @@ def cube(n, side):
                         p[u] = -h + (i + a) / n
                         p[w] = -h + (j + b) / n
                         return vid(p)
-                    c00, c10, c11, c01 = corner(0, 0), corner(1, 0), corner(1, 1), corner(0, 1)
-                    # (u, w, axis) is right-handed, so u x w points along +axis.
-                    if sign > 0:
-                        faces += [(c00, c10, c11), (c00, c11, c01)]
-                    else:
-                        faces += [(c00, c11, c10), (c00, c01, c11)]
+                    faces += _square(corner, sign)
     return verts, faces
+
+
+def _square(corner, sign):
+    """Two triangles of the square corner(0, 0) .. corner(1, 1) in the (u, w) plane of an
+    axis-aligned face, facing +axis for sign > 0: (u, w, axis) is right-handed, so u x w points
+    along +axis."""
+    c00, c10, c11, c01 = corner(0, 0), corner(1, 0), corner(1, 1), corner(0, 1)
+    if sign > 0:
+        return [(c00, c10, c11), (c00, c11, c01)]
+    return [(c00, c11, c10), (c00, c01, c11)]
 
 
 def plane(half, n=1):
@@ -131,12 +136,7 @@ def voxels(cells, side):
                     p[u] += a
                     p[w] += b
                     return vid(tuple(p))
-                c00, c10, c11, c01 = corner(0, 0), corner(1, 0), corner(1, 1), corner(0, 1)
-                # (u, w, axis) is right-handed, so u x w points along +axis.
-                if sign > 0:
-                    faces += [(c00, c10, c11), (c00, c11, c01)]
-                else:
-                    faces += [(c00, c11, c10), (c00, c01, c11)]
+                faces += _square(corner, sign)
     return verts, faces
 
 
