@@ -173,6 +173,93 @@ double smoothstep(double x) {
   return x * x * (3.0 - 2.0 * x);
 }
 
+// One candidate for a class's deepest point: a member's overlap, its point and normal.
+using DeepCandidate = ReductionWorkspace::DeepCandidate;
+
+// The class's deepest overlap as the energy sees it (header, step 5), a smooth maximum F of the
+// candidates' overlaps o_i. With a_i = 1 - (D - o_i) / taper (D the largest o_i; only a_i > 0
+// count), weights m_i = a_i^2 / sum a_j^2 and u <= 0 solving sum m_i (a_i - u)^2 = 1:
+//   u = A - sqrt(A^2 + 1 - B),  A = sum a^3 / sum a^2,  B = sum a^4 / sum a^2,
+//   F = D + g taper u,  g = smoothstep(D / taper) (F is 0 when a contact starts or ends).
+// F = D for a lone deepest candidate and for any number tied with it (so the overlap of a face
+// or an edge does not depend on how many triangle pairs see it), dips by at most a fraction of
+// the taper in between, and is C1 in every o_i (a candidate enters with weight and slope 0).
+// Its gradient gives the point, normal and force: c_k = dF/do_k = g du/da_k, plus, shared by
+// the candidates tied with the deepest (tie_band), 1 + taper u g' - g sum_i du/da_i.
+// normal_scale = |sum c_k n_k|: the force is kn F normal_scale along `normal`. `weights`
+// receives the c_k.
+struct SmoothDeepest {
+  double overlap = 0.0, normal_scale = 1.0;
+  Vector3d point, normal;
+};
+SmoothDeepest smooth_deepest(const std::vector<DeepCandidate> &cands, double taper,
+                             double tie_band, const Vector3d &fallback_point,
+                             const Vector3d &fallback_normal, std::vector<double> &weights) {
+  double D = -std::numeric_limits<double>::infinity();
+  for (const DeepCandidate &d : cands)
+    D = std::max(D, d.overlap);
+  double s2 = 0.0, s3 = 0.0, s4 = 0.0;
+  int num_top = 0;
+  for (const DeepCandidate &d : cands) {
+    const double a = 1.0 - (D - d.overlap) / taper;
+    if (a > 0.0) {
+      s2 += a * a;
+      s3 += a * a * a;
+      s4 += a * a * a * a;
+    }
+    num_top += d.overlap >= D - tie_band;
+  }
+  const double A = s3 / s2, B = s4 / s2; // s2 >= 1: the deepest has a = 1
+  const double R = std::sqrt(std::max(0.0, A * A + 1.0 - B));
+  const double u = A - R;
+  const double x = D / taper;
+  const double g = smoothstep(x);
+  const double g_slope = x > 0.0 && x < 1.0 ? 6.0 * x * (1.0 - x) / taper : 0.0;
+  // du/da_k = dA - (A dA - dB / 2) / R, dA = (3 a^2 s2 - 2 a s3) / s2^2, dB likewise.
+  std::vector<double> &slope = weights; // du/da_k, then c_k in place
+  slope.clear();
+  double sum_slope = 0.0;
+  for (const DeepCandidate &d : cands) {
+    const double a = 1.0 - (D - d.overlap) / taper;
+    double du = 0.0;
+    if (a > 0.0 && R > 0.0) {
+      const double dA = (3.0 * a * a * s2 - 2.0 * a * s3) / (s2 * s2);
+      const double dB = (4.0 * a * a * a * s2 - 2.0 * a * s4) / (s2 * s2);
+      du = dA - (A * dA - 0.5 * dB) / R;
+    }
+    slope.push_back(du);
+    sum_slope += du;
+  }
+  const double top_share = (1.0 + taper * u * g_slope - g * sum_slope) / std::max(1, num_top);
+  Vector3d sum_p = Vector3d::Zero(), sum_n = Vector3d::Zero();
+  double sum_c = 0.0;
+  for (std::size_t k = 0; k < cands.size(); ++k) {
+    const DeepCandidate &d = cands[k];
+    double c_k = g * slope[k];
+    if (d.overlap >= D - tie_band)
+      c_k += top_share;
+    weights[k] = c_k;
+    if (c_k == 0.0)
+      continue;
+    sum_p += c_k * d.point;
+    sum_c += c_k;
+    if (finite(d.normal))
+      sum_n += c_k * d.normal;
+  }
+  SmoothDeepest out;
+  out.overlap = D + taper * u * g;
+  out.point = sum_c > 0.0 ? Vector3d(sum_p / sum_c) : fallback_point;
+  const double len = sum_n.norm();
+  if (std::isfinite(len) && len > 1e-3 * std::abs(sum_c)) {
+    out.normal = sum_n / len;
+    out.normal_scale = len;
+  } else {
+    out.normal = fallback_normal;
+    out.normal_scale = sum_c;
+  }
+  return out;
+}
+
 // How curved a patch is (step 5c): 0 while its polygons' overlap gradients agree (a face on a
 // face, tilted or not: the deepest corner is the peak of the real surfaces), 1 once they spread
 // by 2 kFlatGradientSpread (the facets of a ball, a vertex's or an edge's facets: the moments'
@@ -198,9 +285,13 @@ double face_weight_of(double spread, double tilt) {
 ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &members,
                         const std::vector<int> &cls, const std::vector<int> &absorbed, int c,
                         int seed, double layer, const Vector3d &ref, const Faces &faces,
-                        double tolerance, std::vector<ContactPolygon> &polygons,
-                        std::vector<double> &polygon_exact, std::vector<int> &plain) {
+                        double tolerance, ReductionWorkspace &work) {
   ContactPoint p;
+  std::vector<ContactPolygon> &polygons = work.polygons;
+  std::vector<double> &polygon_exact = work.polygon_layers;
+  std::vector<int> &plain = work.plain;
+  std::vector<DeepCandidate> &deep = work.deep;
+  deep.clear();
   // `polygons` only grows: entries [0, num_polygons) are this class's. Reusing the slots keeps
   // emplace_back from zeroing a 3 KB ContactPolygon per member (value-initialisation).
   std::size_t num_polygons = 0;
@@ -216,6 +307,7 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
   // deepest first, so mostly only the first is.
   const double exact_slack =
       tolerance + 1e-9 * layer + 1e-13 * raw[seed].point.cwiseAbs().maxCoeff();
+  const double taper = kDeepestTaper * layer;
   p.min_distance = std::numeric_limits<double>::infinity();
   for (int i : members) {
     if (cls[i] != c)
@@ -234,6 +326,7 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
       if (!(r.overlap + exact_slack < D_poly))
         D_poly = std::max(D_poly, exact_overlap(r, faces, layer));
     } else {
+      deep.push_back({r.overlap, r.point, r.normal});
       deepest_plain = std::max(deepest_plain, r.overlap);
       plain_overlap += r.overlap;
       plain.push_back(i);
@@ -242,7 +335,6 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
   }
   p.tri_a = s.tri_a;
   p.tri_b = s.tri_b;
-  const double taper = kDeepestTaper * layer;
 
   // The kernel's deepest overlap, point and normal over the members without a polygon (all of
   // them when there are no polygons): step 4 and 5.
@@ -273,9 +365,14 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
       normal = finite(s.normal) ? s.normal : ref;
   };
 
+  const Vector3d fallback_normal = finite(s.normal) ? s.normal : ref;
   if (num_polygons == 0) {
-    kernel_deepest(s.overlap, false, p.point, p.normal);
-    p.overlap = p.energy_overlap = s.overlap;
+    const SmoothDeepest sd = smooth_deepest(deep, taper, kNormalDepthBand * layer, s.point,
+                                            fallback_normal, work.smooth_scratch);
+    p.point = sd.point;
+    p.normal = sd.normal;
+    p.overlap = sd.overlap * sd.normal_scale;
+    p.energy_overlap = sd.overlap;
     return p;
   }
 
@@ -588,8 +685,7 @@ void reduce_clusters(std::vector<Raw> &raw, double layer, const ReductionParams 
     for (int c = first_class; c < static_cast<int>(seeds.size()); ++c)
       if (alive[c]) {
         out.push_back(make_point(raw, group, cls, absorbed, c, seeds[c], layer, ref, faces,
-                                 params.distance_tolerance, work.polygons, work.polygon_layers,
-                                 work.plain));
+                                 params.distance_tolerance, work));
       }
     begin = end;
   }

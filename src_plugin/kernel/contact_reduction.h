@@ -47,20 +47,29 @@
 //     rule); num_merged counts every member, absorbed ones included.
 //  5. The point: the gradient of the contact's energy. The force is kn x the deepest overlap,
 //     the gradient of 1/2 kn overlap^2 when it acts through the deepest pair of closest points
-//     (the overlap changes with the bodies' motion exactly as that pair's distance does), so
-//     the point is the deepest pair's midpoint, averaged over the members within
-//     kDeepestTaper = 1e-3 of the layer of it, with weights falling linearly from 1 (tied) to
-//     0 across that band. An edge lying flat on a face: every point of it is a closest point,
-//     and the torque should not pick one end; with a hard tie (1e-6) the point jumped from the
-//     edge's middle to one end at the slightest roll, a bang-bang torque that made a cube
-//     resting on an incline chatter in roll at the time-step scale and walk (6 um/s); the taper
-//     turns the jump into a stiff, smooth ramp (no chatter: validation/contact/friction), and
-//     departs from the gradient only while two closest points differ in depth by less than
-//     1e-3 of the layer. Any other point -- an overlap-weighted centroid of the members, a
-//     centre of pressure -- gives a torque that is not the gradient of the
-//     energy and a tumbling rock gains or loses energy at every impact (measured,
-//     validation/contact/energy: a box of 32 rocks drifted 2.5 % in 1e5 steps with the
-//     weighted centroid, 16-18 % in one bounce with a centre of pressure; 0.008 % with this rule).
+//     (the overlap changes with the bodies' motion exactly as that pair's distance does). Any
+//     other point -- an overlap-weighted centroid of the members, a centre of pressure -- gives
+//     a torque that is not the gradient of the energy and a tumbling rock gains or loses energy
+//     at every impact (measured, validation/contact/energy: a box of 32 rocks drifted 2.5 % in
+//     1e5 steps with the weighted centroid, 16-18 % in one bounce with a centre of pressure).
+//     But the plain maximum's gradient jumps where two closest points trade places: an edge
+//     lying flat on a face (every point of it is a closest point) had its point jump from the
+//     middle to one end at the slightest roll, a bang-bang torque that made a cube resting on
+//     an incline chatter in roll at the time-step scale and walk (6 um/s). So the overlap of a
+//     class without contact polygons (5b) is a smooth maximum F of the members' overlaps
+//     (smooth_deepest in the .cpp): members within
+//     kDeepestTaper = 1e-3 of the layer of the deepest share it, with weights rising smoothly
+//     from 0 at the taper's edge, and the point, the normal and the force's size are F's
+//     gradient: the members' midpoints and normals weighted by dF/do_i, force kn F |sum_i
+//     (dF/do_i) n_i|. The weights are m_i = a_i^2 / sum a_j^2 on a_i = 1 - (D - o_i) / taper,
+//     so any number of members tied with the deepest (the triangle pairs that all see one edge,
+//     the two ends of an edge lying flat) give F = D exactly, whatever the meshing; between
+//     ties F dips below D by at most a fraction of the taper. F is faded in over the first
+//     taper of depth, so a contact starts and ends at F = 0. With a taper whose point was not
+//     F's gradient (the rule before session 11), a member crossing the band in a few steps
+//     gained or lost energy: non-convex gears, voxel jacks and U shapes colliding without
+//     damping or friction ended 0.3-4e-4 off and did not converge as dt fell
+//     (validation/contact/energy_nonconvex).
 //  5b. Faces lying flat on each other. There the deepest pair is arbitrary (any point of the
 //     faces' overlap is a closest point; the kernel returns one, often a vertex, and its
 //     distance to within its tolerance): a resting cube would be pushed at a corner, tip, and
@@ -116,7 +125,14 @@
 //     deeper than the polygons by more than the taper: their share rises from 0 to 1 (smooth
 //     step) as they exceed D by 1 to 2 tapers, moving D, p_D and the normal to theirs and
 //     beta to 0; within it they are the same closest points seen through the kernel's
-//     tolerance. Members that are not nearly parallel (vertex-face, edge-edge, edge-face,
+//     tolerance. D here is the plain maximum and p_D its tapered region (the rule step 5 had
+//     before session 11): a contact whose last polygon member tilts past 10 degrees moves to
+//     step 5's smooth maximum, which equals D where the members are tied with the deepest (a
+//     rock's face leaving a face, seen by several triangle pairs at once); tried and dropped:
+//     the smooth maximum here too, with the members without a polygon lowered by 2 beta
+//     tapers so that a face's rim stays out -- its energy couples F to beta, whose gradient
+//     scales as 1 / D, and a cube landing on a plane was kicked to 5 rad/s at D ~ taper.
+//     Members that are not nearly parallel (vertex-face, edge-edge, edge-face,
 //     faces at a clear angle) carry no area; absorbed rim contacts neither place nor orient the
 //     point. The switch at 10 degrees: a face tilted that far is uneven by at least
 //     sin(10 deg) / 2 of its width over the overlap (or the overlap is a wedge, r >= 5), so both
@@ -326,6 +342,13 @@ struct ReductionWorkspace {
   std::vector<ContactPolygon> polygons; // one class's contact polygons
   std::vector<double> polygon_layers;   // per polygon: the layer, or -1 (intersecting, sunk)
   std::vector<int> plain;               // one class's members without a polygon (step 5c)
+  // Step 5: the members of a class without polygons, for its smooth maximum.
+  struct DeepCandidate {
+    double overlap;
+    Eigen::Vector3d point, normal;
+  };
+  std::vector<DeepCandidate> deep;
+  std::vector<double> smooth_scratch;
 };
 
 // Reduces `n` triangle-pair contacts of one pair (entries with overlap <= 0 are ignored) and
