@@ -562,18 +562,26 @@ void reduce_clusters(std::vector<Raw> &raw, double layer, const ReductionParams 
   label.resize(n);
   for (int i = 0; i < n; ++i)
     label[i] = link_root(work.parent, i);
-  // All indices grouped by component: a counting sort by label (stable, as the order of a
-  // stable sort by label; labels are indices).
+  // All indices grouped by component, in index order within each (the order of a stable sort
+  // by label): one component (most pairs) as they are, else a counting sort (labels are
+  // indices).
   std::vector<int> &members = work.order;
   members.resize(n);
-  std::vector<int> &tally = work.tally;
-  tally.assign(n + 1, 0);
+  bool one_component = true;
   for (int i = 0; i < n; ++i)
-    ++tally[label[i] + 1];
-  for (int i = 0; i < n; ++i)
-    tally[i + 1] += tally[i];
-  for (int i = 0; i < n; ++i)
-    members[tally[label[i]]++] = i;
+    one_component = one_component && label[i] == 0;
+  if (one_component) {
+    std::iota(members.begin(), members.end(), 0);
+  } else {
+    std::vector<int> &tally = work.tally;
+    tally.assign(n + 1, 0);
+    for (int i = 0; i < n; ++i)
+      ++tally[label[i] + 1];
+    for (int i = 0; i < n; ++i)
+      tally[i + 1] += tally[i];
+    for (int i = 0; i < n; ++i)
+      members[tally[label[i]]++] = i;
+  }
 
   if (!(params.split_angle == work.split_angle)) { // the same angle pair after pair
     work.split_angle = params.split_angle;
@@ -694,7 +702,10 @@ void reduce(const TriangleContact *contacts, int n, const Faces &faces, double e
       continue;
     if (!finite(contact_point(c)))
       continue; // nothing sensible to place; the kernel never produces this
-    keys.push_back({overlap, k});
+    // Field by field: a braced key went through the stack and stalled on store forwarding.
+    ReductionWorkspace::Key &key = keys.emplace_back();
+    key.overlap = overlap;
+    key.index = k;
   }
   std::vector<Raw> &raw = work.raw;
   raw.clear();
