@@ -708,16 +708,17 @@ void reduce(const TriangleContact *contacts, int n, const Faces &faces, double e
     key.index = k;
   }
   std::vector<Raw> &raw = work.raw;
-  raw.clear();
-  if (keys.empty())
+  if (keys.empty()) {
+    raw.clear();
     return;
+  }
   std::sort(keys.begin(), keys.end(),
             [&](const ReductionWorkspace::Key &x, const ReductionWorkspace::Key &y) {
               if (x.overlap != y.overlap)
                 return x.overlap > y.overlap;
               return deeper(contacts[x.index], contacts[y.index], x.index, y.index);
             });
-  raw.resize(keys.size());
+  raw.resize(keys.size()); // every field written below (only the growth is zeroed)
   for (std::size_t k = 0; k < keys.size(); ++k) {
     const TriangleContact &c = contacts[keys[k].index];
     Raw &r = raw[k];
