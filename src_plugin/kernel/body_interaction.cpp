@@ -39,10 +39,11 @@ std::size_t InteractionScratch::bytes() const {
   const ReductionWorkspace &r = reduction;
   std::size_t ints = r.parent.capacity() + r.order.capacity() + r.label.capacity() +
                      r.cls.capacity() + r.absorbed.capacity() + r.seeds.capacity() +
-                     r.alive.capacity() + r.group.capacity();
+                     r.alive.capacity() + r.group.capacity() + r.tally.capacity();
   return distance.bytes() + triangle_contacts.capacity() * sizeof(TriangleContact) +
          points.capacity() * sizeof(ContactPoint) +
          r.raw.capacity() * sizeof(ReductionWorkspace::Raw) +
+         r.keys.capacity() * sizeof(ReductionWorkspace::Key) +
          r.polygons.capacity() * sizeof(ContactPolygon) +
          r.points.capacity() * sizeof(Eigen::Vector3d) +
          ints * sizeof(int) + wall_apart.capacity() +

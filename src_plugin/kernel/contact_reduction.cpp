@@ -40,23 +40,37 @@ Vector3d raw_normal(const TriangleContact &c, const Vector3d &ref) {
   return ref;
 }
 
-// Strict total order of raw contacts: deepest first, then triangle ids, then coordinates.
-bool deeper(const Raw &a, const Raw &b) {
-  if (a.overlap != b.overlap)
-    return a.overlap > b.overlap;
+// A triangle contact's raw values: its distance (0 when intersecting), its overlap under the
+// layer, its point (midway between the closest points).
+double contact_distance(const TriangleContact &c) {
+  return c.intersecting ? 0.0 : std::max(0.0, c.distance);
+}
+double contact_overlap(const TriangleContact &c, double layer) {
+  const double depth = c.intersecting && std::isfinite(c.penetration_depth)
+                           ? std::max(0.0, c.penetration_depth)
+                           : 0.0;
+  return layer - contact_distance(c) + depth;
+}
+Vector3d contact_point(const TriangleContact &c) { return 0.5 * (c.point_a + c.point_b); }
+
+// Strict total order of raw contacts of equal overlap (deepest first before it): triangle ids,
+// then coordinates, then the contacts' indices ia, ib.
+bool deeper(const TriangleContact &a, const TriangleContact &b, int ia, int ib) {
   if (a.tri_a != b.tri_a)
     return a.tri_a < b.tri_a;
   if (a.tri_b != b.tri_b)
     return a.tri_b < b.tri_b;
+  const Vector3d pa = contact_point(a), pb = contact_point(b);
   for (int k = 0; k < 3; ++k)
-    if (a.point[k] != b.point[k])
-      return a.point[k] < b.point[k];
-  return false;
+    if (pa[k] != pb[k])
+      return pa[k] < pb[k];
+  return ia < ib;
 }
 
 // Deep penetration: in a component with intersecting pairs, separated pairs that face against
 // them are seen from behind the other surface; flip them (header, "Intersecting triangles").
-void flip_sunk_members(std::vector<Raw> &raw, const std::vector<int> &members, double layer,
+// True if it flipped any.
+bool flip_sunk_members(std::vector<Raw> &raw, const std::vector<int> &members, double layer,
                        const Vector3d &ref) {
   Vector3d mean = Vector3d::Zero();
   bool any = false;
@@ -66,16 +80,19 @@ void flip_sunk_members(std::vector<Raw> &raw, const std::vector<int> &members, d
       any = true;
     }
   if (!any)
-    return;
+    return false;
   const double len = mean.norm();
   mean = (std::isfinite(len) && len > 0.0) ? Vector3d(mean / len) : ref;
+  bool flipped = false;
   for (int i : members) {
     Raw &r = raw[i];
     if (!r.intersecting && r.normal.dot(mean) < 0.0) {
       r.normal = -r.normal;
       r.overlap = layer + r.distance;
+      flipped = true;
     }
   }
+  return flipped;
 }
 
 // Members of class `s`, measured along class m's normal, overlap no more than m does.
@@ -115,10 +132,27 @@ struct Faces {
   const TriangleSoA *a, *b;
 };
 
+// Whether triangles ta of a and tb of b are so far from parallel that contact_polygon returns
+// false for them (most members are): the cosine of their angle below cos(kParallelFaceAngle) by
+// a margin far above rounding, without contact_polygon's roots and divisions. Out of line, so
+// that the arithmetic of the reduction around it compiles as it did, bit for bit. Overflow or
+// underflow leaves it false.
+[[gnu::noinline]] bool clearly_not_parallel(const TriangleSoA &a, int ta, const TriangleSoA &b,
+                                            int tb) {
+  static const double limit = std::cos(kParallelFaceAngle);
+  const Vector3d a0 = a.vertex(ta, 0), b0 = b.vertex(tb, 0);
+  const Vector3d na = (a.vertex(ta, 1) - a0).cross(a.vertex(ta, 2) - a0);
+  const Vector3d nb = (b.vertex(tb, 1) - b0).cross(b.vertex(tb, 2) - b0);
+  const double c = na.dot(nb);
+  return c * c < 0.99 * (limit * limit) * (na.squaredNorm() * nb.squaredNorm());
+}
+
 // The member's contact polygon (header, step 5) if its triangles are nearly parallel and their
 // overlap has an area beyond rounding; false otherwise.
 bool member_polygon(const Raw &r, const Faces &faces, double layer, ContactPolygon &poly) {
   const TriangleSoA &ta = *faces.a, &tb = *faces.b;
+  if (clearly_not_parallel(ta, r.tri_a, tb, r.tri_b))
+    return false; // as contact_polygon would
   if (!contact_polygon(ta.vertex(r.tri_a, 0), ta.vertex(r.tri_a, 1), ta.vertex(r.tri_a, 2),
                        tb.vertex(r.tri_b, 0), tb.vertex(r.tri_b, 1), tb.vertex(r.tri_b, 2),
                        r.normal, layer, poly))
@@ -625,13 +659,32 @@ void reduce_clusters(std::vector<Raw> &raw, double layer, const ReductionParams 
   label.resize(n);
   for (int i = 0; i < n; ++i)
     label[i] = link_root(work.parent, i);
-  std::vector<int> &members = work.order; // reused: all indices grouped by component
+  // All indices grouped by component, in index order within each (the order of a stable sort
+  // by label): one component (most pairs) as they are, else a counting sort (labels are
+  // indices).
+  std::vector<int> &members = work.order;
   members.resize(n);
-  std::iota(members.begin(), members.end(), 0);
-  std::stable_sort(members.begin(), members.end(),
-                   [&](int i, int j) { return label[i] < label[j]; });
+  bool one_component = true;
+  for (int i = 0; i < n; ++i)
+    one_component = one_component && label[i] == 0;
+  if (one_component) {
+    std::iota(members.begin(), members.end(), 0);
+  } else {
+    std::vector<int> &tally = work.tally;
+    tally.assign(n + 1, 0);
+    for (int i = 0; i < n; ++i)
+      ++tally[label[i] + 1];
+    for (int i = 0; i < n; ++i)
+      tally[i + 1] += tally[i];
+    for (int i = 0; i < n; ++i)
+      members[tally[label[i]]++] = i;
+  }
 
-  const double cos_split = std::cos(params.split_angle);
+  if (!(params.split_angle == work.split_angle)) { // the same angle pair after pair
+    work.split_angle = params.split_angle;
+    work.cos_split = std::cos(params.split_angle);
+  }
+  const double cos_split = work.cos_split;
   std::vector<int> &cls = work.cls;
   cls.assign(n, -1);
   std::vector<int> &absorbed = work.absorbed;
@@ -646,13 +699,14 @@ void reduce_clusters(std::vector<Raw> &raw, double layer, const ReductionParams 
     while (end < n && label[members[end]] == label[members[begin]])
       ++end;
     group.assign(members.begin() + begin, members.begin() + end);
-    flip_sunk_members(raw, group, layer, ref);
-    // Deepest first again after the flips (ties keep the sorted order: indices).
-    std::sort(group.begin(), group.end(), [&](int i, int j) {
-      if (raw[i].overlap != raw[j].overlap)
-        return raw[i].overlap > raw[j].overlap;
-      return i < j;
-    });
+    // Deepest first again after the flips (ties keep the sorted order: indices). Without a
+    // flip the group, in index order, is in that order already (raw is sorted deepest first).
+    if (flip_sunk_members(raw, group, layer, ref))
+      std::sort(group.begin(), group.end(), [&](int i, int j) {
+        if (raw[i].overlap != raw[j].overlap)
+          return raw[i].overlap > raw[j].overlap;
+        return i < j;
+      });
     const int first_class = static_cast<int>(seeds.size());
     for (int seed : group) {
       if (cls[seed] >= 0)
@@ -689,10 +743,12 @@ void reduce_clusters(std::vector<Raw> &raw, double layer, const ReductionParams 
       }
     begin = end;
   }
-  // Deepest first; ties keep component/class order (deterministic).
-  std::stable_sort(out.begin(), out.end(), [](const ContactPoint &a, const ContactPoint &b) {
-    return a.overlap > b.overlap;
-  });
+  // Deepest first; ties keep component/class order (deterministic). (One point, mostly: no
+  // sort, whose buffer would be allocated.)
+  if (out.size() > 1)
+    std::stable_sort(out.begin(), out.end(), [](const ContactPoint &a, const ContactPoint &b) {
+      return a.overlap > b.overlap;
+    });
 }
 
 ContactPoint single_point(const Raw &r) {
@@ -726,8 +782,10 @@ void reduce(const TriangleContact *contacts, int n, const Faces &faces, double e
   const int na = faces.a->num_triangles(), nb = faces.b->num_triangles();
   const double layer = eps_a + eps_b;
   const Vector3d ref = safe_reference(params.reference_direction);
-  std::vector<Raw> &raw = work.raw;
-  raw.clear();
+  // The contacts that count, deepest first (`deeper`), sorted as keys, which move cheaper than
+  // raw contacts; then the raw contacts in that order.
+  std::vector<ReductionWorkspace::Key> &keys = work.keys;
+  keys.clear();
   for (int k = 0; k < n; ++k) {
     const TriangleContact &c = contacts[k];
     if (c.tri_a < 0 || c.tri_a >= na || c.tri_b < 0 || c.tri_b >= nb)
@@ -735,29 +793,40 @@ void reduce(const TriangleContact *contacts, int n, const Faces &faces, double e
                               " names triangles " + std::to_string(c.tri_a) + ", " +
                               std::to_string(c.tri_b) + " of meshes with " + std::to_string(na) +
                               ", " + std::to_string(nb));
-    const double distance = c.intersecting ? 0.0 : std::max(0.0, c.distance);
-    const double depth = c.intersecting && std::isfinite(c.penetration_depth)
-                             ? std::max(0.0, c.penetration_depth)
-                             : 0.0;
-    const double overlap = layer - distance + depth;
+    const double overlap = contact_overlap(c, layer);
     if (!(overlap > 0.0))
       continue;
-    Raw r;
-    r.point = 0.5 * (c.point_a + c.point_b);
-    if (!finite(r.point))
+    if (!finite(contact_point(c)))
       continue; // nothing sensible to place; the kernel never produces this
+    // Field by field: a braced key went through the stack and stalled on store forwarding.
+    ReductionWorkspace::Key &key = keys.emplace_back();
+    key.overlap = overlap;
+    key.index = k;
+  }
+  std::vector<Raw> &raw = work.raw;
+  if (keys.empty()) {
+    raw.clear();
+    return;
+  }
+  std::sort(keys.begin(), keys.end(),
+            [&](const ReductionWorkspace::Key &x, const ReductionWorkspace::Key &y) {
+              if (x.overlap != y.overlap)
+                return x.overlap > y.overlap;
+              return deeper(contacts[x.index], contacts[y.index], x.index, y.index);
+            });
+  raw.resize(keys.size()); // every field written below (only the growth is zeroed)
+  for (std::size_t k = 0; k < keys.size(); ++k) {
+    const TriangleContact &c = contacts[keys[k].index];
+    Raw &r = raw[k];
+    r.point = contact_point(c);
     r.normal = raw_normal(c, ref);
     r.separation = c.intersecting ? Vector3d::Zero() : Vector3d(c.point_b - c.point_a);
-    r.overlap = overlap;
-    r.distance = distance;
+    r.overlap = keys[k].overlap;
+    r.distance = contact_distance(c);
     r.tri_a = c.tri_a;
     r.tri_b = c.tri_b;
     r.intersecting = c.intersecting;
-    raw.push_back(r);
   }
-  std::sort(raw.begin(), raw.end(), deeper);
-  if (raw.empty())
-    return;
 
   switch (params.method) {
   case ReductionMethod::none:

@@ -336,9 +336,16 @@ struct ReductionWorkspace {
     bool intersecting;
   };
   std::vector<Raw> raw;
+  struct Key { // a triangle contact that counts: its overlap, its index; sorted into raw's order
+    double overlap;
+    int index;
+  };
+  std::vector<Key> keys;
   std::vector<Eigen::Vector3d> points; // raw[i].point, for the links of step 1
   LinkScratch links;
-  std::vector<int> parent, order, label, cls, absorbed, seeds, alive, group;
+  std::vector<int> parent, order, label, cls, absorbed, seeds, alive, group, tally;
+  double split_angle = std::numeric_limits<double>::quiet_NaN(); // cos_split's angle
+  double cos_split = 1.0;                                         // its cosine, kept
   std::vector<ContactPolygon> polygons; // one class's contact polygons
   std::vector<double> polygon_layers;   // per polygon: the layer, or -1 (intersecting, sunk)
   std::vector<int> plain;               // one class's members without a polygon (step 5c)

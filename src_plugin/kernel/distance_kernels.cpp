@@ -75,11 +75,17 @@ private:
 };
 
 TrianglePairDistance accepted_result(const PenaltyBlockResult &r, int l) {
+  // The normal from the locals, not from the result's fields just stored: read back, those
+  // stalled on store forwarding (two 8-byte stores, one 16-byte load).
+  const double distance = r.upper[l];
+  const Eigen::Vector3d a(r.point_a[0][l], r.point_a[1][l], r.point_a[2][l]);
+  const Eigen::Vector3d b(r.point_b[0][l], r.point_b[1][l], r.point_b[2][l]);
+  const Eigen::Vector3d normal = (b - a) / distance;
   TrianglePairDistance d;
-  d.distance = r.upper[l];
-  d.point_a = {r.point_a[0][l], r.point_a[1][l], r.point_a[2][l]};
-  d.point_b = {r.point_b[0][l], r.point_b[1][l], r.point_b[2][l]};
-  d.normal = (d.point_b - d.point_a) / d.distance;
+  d.distance = distance;
+  d.point_a = a;
+  d.point_b = b;
+  d.normal = normal;
   d.intersecting = false;
   d.penetration_depth = 0.0;
   d.lower_bound = r.lower[l];

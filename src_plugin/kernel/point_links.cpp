@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numeric>
 
@@ -12,8 +13,11 @@ namespace {
 using Eigen::Vector3d;
 using Cell = std::array<std::int64_t, 3>;
 
-// Up to this many points every pair is tested: n^2 / 2 distances are cheaper than a sort.
-constexpr int kAllPairsLinkLimit = 12;
+// Up to this many points every pair is tested, the links kept as bit sets: n^2 / 2 distances
+// are cheaper than a sort, and the points of one contact are mostly within `link` of each
+// other (the sweep tests those pairs too). Below the grid's threshold.
+constexpr int kAllPairsLinkLimit = 63;
+static_assert(kAllPairsLinkLimit < kGridLinkThreshold, "the grid takes over above");
 
 // Union by smaller index: every root is its component's smallest index.
 void unite(std::vector<int> &parent, int i, int j) {
@@ -120,13 +124,36 @@ void link_points(const std::vector<Vector3d> &points, double link, std::vector<i
   if (n < 2)
     return;
   if (n <= kAllPairsLinkLimit) {
-    // A contact of a few triangle pairs (most of them): every pair, no sort. The components,
-    // and each root (its smallest index), do not depend on the order of the unions.
+    // A contact of a few triangle pairs (most of them): every pair, no sort, the links as bit
+    // sets; each component's points point at its smallest index, its root.
+    using Bits = std::uint64_t;
+    static_assert(kAllPairsLinkLimit <= 64, "a point's links fit in 64 bits");
     const double link2 = link * link;
+    Bits linked[kAllPairsLinkLimit];
+    for (int i = 0; i < n; ++i)
+      linked[i] = Bits{1} << i;
     for (int i = 0; i < n; ++i)
       for (int j = i + 1; j < n; ++j)
-        if ((points[i] - points[j]).squaredNorm() <= link2)
-          unite(parent, i, j);
+        if ((points[i] - points[j]).squaredNorm() <= link2) {
+          linked[i] |= Bits{1} << j;
+          linked[j] |= Bits{1} << i;
+        }
+    Bits done = 0;
+    for (int i = 0; i < n; ++i) {
+      if (done >> i & 1u)
+        continue;
+      // The component of i: its members' links, until no member is left unvisited. No member
+      // lies below i (it would have been done with its own, smaller, root).
+      Bits component = linked[i], visited = Bits{1} << i;
+      while (component != visited) {
+        const int k = __builtin_ctzll(component & ~visited);
+        visited |= Bits{1} << k;
+        component |= linked[k];
+      }
+      for (Bits rest = component; rest; rest &= rest - 1)
+        parent[__builtin_ctzll(rest)] = i;
+      done |= component;
+    }
     return;
   }
   Vector3d lo = Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;

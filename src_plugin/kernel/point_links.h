@@ -1,10 +1,12 @@
 // Connected components of a point set under "closer than a link length" (contact_reduction.h,
 // step 1: which raw contacts belong to one contact patch).
 //
-// Two algorithms with the same result -- the components are a property of the point set, and
+// Three algorithms with the same result -- the components are a property of the point set, and
 // every root is the component's smallest index whatever the order of the unions:
-//  * a sweep along the axis of largest extent, pair tests within `link` along it: cheap for the
-//    few raw contacts of an ordinary contact, but it tests every pair within `link` of each
+//  * below kGridLinkThreshold points, every pair, the links as bit sets and the components
+//    read off them (no sort, no union-find): the few raw contacts of an ordinary contact;
+//  * a sweep along the axis of largest extent, pair tests within `link` along it (where the
+//    grid's cell indices would not be exact): it tests every pair within `link` of each
 //    other, quadratic for the dense raw contacts of two finely meshed faces pressed together
 //    (two 4 mm cubes with edges of 2 epsilon: 66 % of a 0.45 s step);
 //  * above kGridLinkThreshold points, a grid of cells of side link / sqrt(3): all points of one

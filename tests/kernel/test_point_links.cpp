@@ -47,7 +47,7 @@ TEST(PointLinks, ComponentsMatchTheDefinition) {
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   const double link = 0.1;
-  for (const int n : {2, 10, 63, 64, 65, 200, 700}) {
+  for (const int n : {2, 10, 12, 13, 40, 63, 64, 65, 200, 700}) {
     for (int kind = 0; kind < 4; ++kind) {
       std::vector<Vector3d> p(n);
       for (int i = 0; i < n; ++i) {
