@@ -287,6 +287,17 @@ SmoothDeepest smooth_deepest(const std::vector<DeepCandidate> &cands, double tap
   if (std::isfinite(len) && len > 1e-3 * std::abs(sum_c)) {
     out.normal = sum_n / len;
     out.normal_scale = len;
+    // F's gradient under rotation is the moment sum_k c_k x_k x n_k; one force N = sum c n
+    // has it exactly, but for its part along N (a twist), when it acts at p + N x M / |N|^2
+    // (M the moment about p, the weighted centroid): members with different normals at
+    // different points (a gear's teeth) would otherwise turn the bodies the wrong amount.
+    Vector3d moment = Vector3d::Zero();
+    for (std::size_t k = 0; k < cands.size(); ++k)
+      if (weights[k] != 0.0 && finite(cands[k].normal))
+        moment += weights[k] * (cands[k].point - out.point).cross(cands[k].normal);
+    const Vector3d shift = sum_n.cross(moment) / (len * len);
+    if (finite(shift))
+      out.point += shift;
   } else {
     out.normal = fallback_normal;
     out.normal_scale = sum_c;
