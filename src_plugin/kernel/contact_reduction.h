@@ -57,11 +57,13 @@
 //     middle to one end at the slightest roll, a bang-bang torque that made a cube resting on
 //     an incline chatter in roll at the time-step scale and walk (6 um/s). So the overlap of a
 //     class without contact polygons (5b) is a smooth maximum F of the members' overlaps
-//     (smooth_deepest in the .cpp): members within
-//     kDeepestTaper = 1e-3 of the layer of the deepest share it, with weights rising smoothly
-//     from 0 at the taper's edge, and the point, the normal and the force's size are F's
-//     gradient: the members' midpoints and normals weighted by dF/do_i, force kn F |sum_i
-//     (dF/do_i) n_i|. The weights are m_i = a_i^2 / sum a_j^2 on a_i = 1 - (D - o_i) / taper,
+//     (smooth_deepest in the .cpp): members within kDeepestTaper = 1e-3 of the layer of the
+//     deepest share it, with weights rising smoothly from 0 at the taper's edge, and the point,
+//     the normal and the force's size are F's gradient: force kn F |sum_i (dF/do_i) n_i| along
+//     that sum, at the members' midpoints weighted by dF/do_i, moved across the normal so that
+//     the force's moment is F's gradient under rotation (but for its twist about the normal,
+//     which one force cannot carry). The weights are m_i = a_i^2 / sum a_j^2 on
+//     a_i = 1 - (D - o_i) / taper,
 //     so any number of members tied with the deepest (the triangle pairs that all see one edge,
 //     the two ends of an edge lying flat) give F = D exactly, whatever the meshing; between
 //     ties F dips below D by at most a fraction of the taper. F is faded in over the first
