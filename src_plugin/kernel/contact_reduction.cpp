@@ -233,15 +233,33 @@ SmoothDeepest smooth_deepest(const std::vector<DeepCandidate> &cands, double tap
   for (const DeepCandidate &d : cands)
     D = std::max(D, d.overlap);
   double s2 = 0.0, s3 = 0.0, s4 = 0.0;
-  int num_top = 0;
-  for (const DeepCandidate &d : cands) {
-    const double a = 1.0 - (D - d.overlap) / taper;
+  int num_top = 0, num_active = 0, last_active = 0;
+  weights.resize(cands.size()); // a_k for now
+  for (std::size_t k = 0; k < cands.size(); ++k) {
+    const double a = 1.0 - (D - cands[k].overlap) / taper;
+    weights[k] = a;
     if (a > 0.0) {
       s2 += a * a;
       s3 += a * a * a;
       s4 += a * a * a * a;
+      ++num_active;
+      last_active = static_cast<int>(k);
     }
-    num_top += d.overlap >= D - tie_band;
+    num_top += cands[k].overlap >= D - tie_band;
+  }
+  if (num_active == 1) { // the usual case: one deepest member, F = D, all of its gradient
+    const DeepCandidate &d = cands[last_active];
+    weights.assign(cands.size(), 0.0);
+    weights[last_active] = 1.0;
+    SmoothDeepest out;
+    out.overlap = D;
+    out.point = d.point;
+    if (finite(d.normal) && d.normal.norm() > 1e-3) {
+      out.normal = d.normal;
+    } else {
+      out.normal = fallback_normal;
+    }
+    return out;
   }
   const double A = s3 / s2, B = s4 / s2; // s2 >= 1: the deepest has a = 1
   const double R = std::sqrt(std::max(0.0, A * A + 1.0 - B));
@@ -250,18 +268,18 @@ SmoothDeepest smooth_deepest(const std::vector<DeepCandidate> &cands, double tap
   const double g = smoothstep(x);
   const double g_slope = x > 0.0 && x < 1.0 ? 6.0 * x * (1.0 - x) / taper : 0.0;
   // du/da_k = dA - (A dA - dB / 2) / R, dA = (3 a^2 s2 - 2 a s3) / s2^2, dB likewise.
-  std::vector<double> &slope = weights; // du/da_k, then c_k in place
-  slope.clear();
+  std::vector<double> &slope = weights; // a_k, then du/da_k, then c_k in place
   double sum_slope = 0.0;
-  for (const DeepCandidate &d : cands) {
-    const double a = 1.0 - (D - d.overlap) / taper;
+  const double inv_s2s2 = 1.0 / (s2 * s2);
+  for (double &w : slope) {
+    const double a = w;
     double du = 0.0;
     if (a > 0.0 && R > 0.0) {
-      const double dA = (3.0 * a * a * s2 - 2.0 * a * s3) / (s2 * s2);
-      const double dB = (4.0 * a * a * a * s2 - 2.0 * a * s4) / (s2 * s2);
+      const double dA = (3.0 * a * s2 - 2.0 * s3) * a * inv_s2s2;
+      const double dB = (4.0 * a * a * s2 - 2.0 * s4) * a * inv_s2s2;
       du = dA - (A * dA - 0.5 * dB) / R;
     }
-    slope.push_back(du);
+    w = du;
     sum_slope += du;
   }
   const double top_share = (1.0 + taper * u * g_slope - g * sum_slope) / std::max(1, num_top);
