@@ -207,11 +207,8 @@ double smoothstep(double x) {
   return x * x * (3.0 - 2.0 * x);
 }
 
-// One candidate for a class's deepest point: a member's overlap, its point and normal.
-using DeepCandidate = ReductionWorkspace::DeepCandidate;
-
 // The class's deepest overlap as the energy sees it (header, step 5), a smooth maximum F of the
-// candidates' overlaps o_i. With a_i = 1 - (D - o_i) / taper (D the largest o_i; only a_i > 0
+// overlaps o_i of its members raw[cands[i]]. With a_i = 1 - (D - o_i) / taper (D the largest o_i; only a_i > 0
 // count), weights m_i = a_i^2 / sum a_j^2 and u <= 0 solving sum m_i (a_i - u)^2 = 1:
 //   u = A - sqrt(A^2 + 1 - B),  A = sum a^3 / sum a^2,  B = sum a^4 / sum a^2,
 //   F = D + g taper u,  g = smoothstep(D / taper) (F is 0 when a contact starts or ends).
@@ -226,17 +223,17 @@ struct SmoothDeepest {
   double overlap = 0.0, normal_scale = 1.0;
   Vector3d point, normal;
 };
-SmoothDeepest smooth_deepest(const std::vector<DeepCandidate> &cands, double taper,
-                             double tie_band, const Vector3d &fallback_point,
+SmoothDeepest smooth_deepest(const std::vector<Raw> &raw, const std::vector<int> &cands,
+                             double taper, double tie_band, const Vector3d &fallback_point,
                              const Vector3d &fallback_normal, std::vector<double> &weights) {
   double D = -std::numeric_limits<double>::infinity();
-  for (const DeepCandidate &d : cands)
-    D = std::max(D, d.overlap);
+  for (int i : cands)
+    D = std::max(D, raw[i].overlap);
   double s2 = 0.0, s3 = 0.0, s4 = 0.0;
   int num_top = 0, num_active = 0, last_active = 0;
   weights.resize(cands.size()); // a_k for now
   for (std::size_t k = 0; k < cands.size(); ++k) {
-    const double a = 1.0 - (D - cands[k].overlap) / taper;
+    const double a = 1.0 - (D - raw[cands[k]].overlap) / taper;
     weights[k] = a;
     if (a > 0.0) {
       s2 += a * a;
@@ -245,20 +242,16 @@ SmoothDeepest smooth_deepest(const std::vector<DeepCandidate> &cands, double tap
       ++num_active;
       last_active = static_cast<int>(k);
     }
-    num_top += cands[k].overlap >= D - tie_band;
+    num_top += raw[cands[k]].overlap >= D - tie_band;
   }
   if (num_active == 1) { // the usual case: one deepest member, F = D, all of its gradient
-    const DeepCandidate &d = cands[last_active];
+    const Raw &d = raw[cands[last_active]];
     weights.assign(cands.size(), 0.0);
     weights[last_active] = 1.0;
     SmoothDeepest out;
     out.overlap = D;
     out.point = d.point;
-    if (finite(d.normal) && d.normal.norm() > 1e-3) {
-      out.normal = d.normal;
-    } else {
-      out.normal = fallback_normal;
-    }
+    out.normal = finite(d.normal) ? d.normal : fallback_normal; // unit (raw_normal)
     return out;
   }
   const double A = s3 / s2, B = s4 / s2; // s2 >= 1: the deepest has a = 1
@@ -286,7 +279,7 @@ SmoothDeepest smooth_deepest(const std::vector<DeepCandidate> &cands, double tap
   Vector3d sum_p = Vector3d::Zero(), sum_n = Vector3d::Zero();
   double sum_c = 0.0;
   for (std::size_t k = 0; k < cands.size(); ++k) {
-    const DeepCandidate &d = cands[k];
+    const Raw &d = raw[cands[k]];
     double c_k = g * slope[k];
     if (d.overlap >= D - tie_band)
       c_k += top_share;
@@ -311,8 +304,8 @@ SmoothDeepest smooth_deepest(const std::vector<DeepCandidate> &cands, double tap
     // different points (a gear's teeth) would otherwise turn the bodies the wrong amount.
     Vector3d moment = Vector3d::Zero();
     for (std::size_t k = 0; k < cands.size(); ++k)
-      if (weights[k] != 0.0 && finite(cands[k].normal))
-        moment += weights[k] * (cands[k].point - out.point).cross(cands[k].normal);
+      if (weights[k] != 0.0 && finite(raw[cands[k]].normal))
+        moment += weights[k] * (raw[cands[k]].point - out.point).cross(raw[cands[k]].normal);
     const Vector3d shift = sum_n.cross(moment) / (len * len);
     if (finite(shift))
       out.point += shift;
@@ -353,8 +346,6 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
   std::vector<ContactPolygon> &polygons = work.polygons;
   std::vector<double> &polygon_exact = work.polygon_layers;
   std::vector<int> &plain = work.plain;
-  std::vector<DeepCandidate> &deep = work.deep;
-  deep.clear();
   // `polygons` only grows: entries [0, num_polygons) are this class's. Reusing the slots keeps
   // emplace_back from zeroing a 3 KB ContactPolygon per member (value-initialisation).
   std::size_t num_polygons = 0;
@@ -389,7 +380,6 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
       if (!(r.overlap + exact_slack < D_poly))
         D_poly = std::max(D_poly, exact_overlap(r, faces, layer));
     } else {
-      deep.push_back({r.overlap, r.point, r.normal});
       deepest_plain = std::max(deepest_plain, r.overlap);
       plain_overlap += r.overlap;
       plain.push_back(i);
@@ -430,7 +420,7 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
 
   const Vector3d fallback_normal = finite(s.normal) ? s.normal : ref;
   if (num_polygons == 0) {
-    const SmoothDeepest sd = smooth_deepest(deep, taper, kNormalDepthBand * layer, s.point,
+    const SmoothDeepest sd = smooth_deepest(raw, plain, taper, kNormalDepthBand * layer, s.point,
                                             fallback_normal, work.smooth_scratch);
     p.point = sd.point;
     p.normal = sd.normal;

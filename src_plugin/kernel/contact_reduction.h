@@ -63,10 +63,10 @@
 //     that sum, at the members' midpoints weighted by dF/do_i, moved across the normal so that
 //     the force's moment is F's gradient under rotation (but for its twist about the normal,
 //     which one force cannot carry). The weights are m_i = a_i^2 / sum a_j^2 on
-//     a_i = 1 - (D - o_i) / taper,
-//     so any number of members tied with the deepest (the triangle pairs that all see one edge,
-//     the two ends of an edge lying flat) give F = D exactly, whatever the meshing; between
-//     ties F dips below D by at most a fraction of the taper. F is faded in over the first
+//     a_i = 1 - (D - o_i) / taper, so any number of members tied with the deepest (the
+//     triangle pairs that all see one edge, the two ends of an edge lying flat) give F = D
+//     exactly, whatever the meshing; between ties F dips below D by at most a fraction of the
+//     taper. F is faded in over the first
 //     taper of depth, so a contact starts and ends at F = 0. With a taper whose point was not
 //     F's gradient (the rule before session 11), a member crossing the band in a few steps
 //     gained or lost energy: non-convex gears, voxel jacks and U shapes colliding without
@@ -350,14 +350,8 @@ struct ReductionWorkspace {
   double cos_split = 1.0;                                         // its cosine, kept
   std::vector<ContactPolygon> polygons; // one class's contact polygons
   std::vector<double> polygon_layers;   // per polygon: the layer, or -1 (intersecting, sunk)
-  std::vector<int> plain;               // one class's members without a polygon (step 5c)
-  // Step 5: the members of a class without polygons, for its smooth maximum.
-  struct DeepCandidate {
-    double overlap;
-    Eigen::Vector3d point, normal;
-  };
-  std::vector<DeepCandidate> deep;
-  std::vector<double> smooth_scratch;
+  std::vector<int> plain; // one class's members without a polygon (steps 5 and 5c)
+  std::vector<double> smooth_scratch; // step 5: the smooth maximum's weights
 };
 
 // Reduces `n` triangle-pair contacts of one pair (entries with overlap <= 0 are ignored) and
