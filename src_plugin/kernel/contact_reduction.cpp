@@ -821,6 +821,8 @@ void reduce(const TriangleContact *contacts, int n, const Faces &faces, double e
     ReductionWorkspace::Key &key = keys.emplace_back();
     key.overlap = overlap;
     key.index = k;
+    key.tri_a = c.tri_a;
+    key.tri_b = c.tri_b;
   }
   std::vector<Raw> &raw = work.raw;
   if (keys.empty()) {
@@ -831,6 +833,10 @@ void reduce(const TriangleContact *contacts, int n, const Faces &faces, double e
             [&](const ReductionWorkspace::Key &x, const ReductionWorkspace::Key &y) {
               if (x.overlap != y.overlap)
                 return x.overlap > y.overlap;
+              if (x.tri_a != y.tri_a) // deeper()'s first criteria, from the keys
+                return x.tri_a < y.tri_a;
+              if (x.tri_b != y.tri_b)
+                return x.tri_b < y.tri_b;
               return deeper(contacts[x.index], contacts[y.index], x.index, y.index);
             });
   raw.resize(keys.size()); // every field written below (only the growth is zeroed)

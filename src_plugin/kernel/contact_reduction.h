@@ -338,9 +338,10 @@ struct ReductionWorkspace {
     bool intersecting;
   };
   std::vector<Raw> raw;
-  struct Key { // a triangle contact that counts: its overlap, its index; sorted into raw's order
-    double overlap;
+  struct Key { // a triangle contact that counts: its overlap, index and triangles; sorted into
+    double overlap; // raw's order (the triangles settle most ties without reading the contact)
     int index;
+    int tri_a, tri_b;
   };
   std::vector<Key> keys;
   std::vector<Eigen::Vector3d> points; // raw[i].point, for the links of step 1
