@@ -309,6 +309,32 @@ void FixTriParticles::ensure_bodies(const int *atoms, int n, int threads) {
   once_per_evaluation(atoms, n, threads, body_stamp_, [this](int i) { build_body(i); });
 }
 
+void FixTriParticles::ensure_world_triangles_of(int i) {
+  // GCC's atomic builtins on the plain stamp (C++17 has no atomic_ref): every other access to
+  // the stamps is outside parallel regions.
+  long long *stamp = &world_stamp_[i];
+  for (;;) {
+    long long seen = __atomic_load_n(stamp, __ATOMIC_ACQUIRE);
+    if (seen == evaluation_)
+      return;
+    if (seen == -evaluation_) { // another thread's, ~0.1 us
+      __builtin_ia32_pause();
+      continue;
+    }
+    if (!__atomic_compare_exchange_n(stamp, &seen, -evaluation_, false, __ATOMIC_ACQ_REL,
+                                     __ATOMIC_ACQUIRE))
+      continue;
+    try {
+      transform_atom(i);
+    } catch (...) { // (no memory) unclaimed again: a waiting task claims it, none waits for ever
+      __atomic_store_n(stamp, 0LL, __ATOMIC_RELEASE);
+      throw;
+    }
+    __atomic_store_n(stamp, evaluation_, __ATOMIC_RELEASE);
+    return;
+  }
+}
+
 void FixTriParticles::update_world_triangles(int n) {
   std::vector<int> all(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i)

@@ -130,7 +130,7 @@ public:
   // Where the contact styles publish, and their readers read (contact_board.h).
   tri_liggghts::ContactBoard &board() { return board_; }
   // World-frame triangles of owned and ghost atom i: valid once ensure_world_triangles (or
-  // update_world_triangles) has included i in this force evaluation.
+  // update_world_triangles, ensure_world_triangles_of) has included i in this force evaluation.
   const tri::TriangleSoA &world_triangles(int i) const { return world_[i]; }
   // Atom i (owned or ghost) as the contact kernel sees it: its world-frame triangles, soft
   // layer, edge lengths, and x, v, omega, rmass. Valid like world_triangles(i): built with
@@ -143,13 +143,20 @@ public:
   // Body records (not the world-frame triangles) of the atoms, at most once per force
   // evaluation; as ensure_world_triangles.
   void ensure_bodies(const int *atoms, int n, int threads = 1);
-  // World-frame triangles only where needed (issue 12, item 4): each source calls this for the
-  // atoms of its tasks before its engine runs (never inside the parallel loop); an atom's
+  // World-frame triangles only where needed (issue 12, item 4): a reader calls this for the
+  // atoms it reads before it reads them (never inside a parallel loop; the contact styles'
+  // tasks use ensure_world_triangles_of instead); an atom's
   // triangles are computed from x and its quaternion at most once per force evaluation
   // (pre_force starts a new one). `threads` > 1 shares the atoms among OpenMP threads.
   void ensure_world_triangles(const int *atoms, int n, int threads = 1);
   // The same for atoms [0, n).
   void update_world_triangles(int n);
+  // One atom's world-frame triangles, from inside a contact style's parallel loop: the first
+  // task (on any thread) that needs atom i transforms it and the others wait for it. Computed
+  // just before they are read, the triangles are in that core's cache when the kernel gathers
+  // them; computed for every atom first, a pile's 3 MB of them had left the cache by then.
+  // Its Body record must be built already (ensure_bodies).
+  void ensure_world_triangles_of(int i);
   // Insertion (particle_insertion.h): the rules a template's shape follows, and atom i, just
   // inserted by a template with a shape (no tag yet), is given that shape.
   bool assigns_by_type() const { return assign_by_type_; }
@@ -162,7 +169,9 @@ private:
   std::vector<tri::TriangleSoA> world_;
   std::vector<tri::Body> bodies_;      // per atom, with world_ (body())
   void size_world(std::size_t n);      // world_, bodies_ and stamps for n atoms
-  std::vector<long long> world_stamp_; // per atom: the evaluation its world_ is of
+  // Per atom: the evaluation its world_ is of; minus it while a thread is transforming it
+  // (ensure_world_triangles_of, read and claimed atomically there).
+  std::vector<long long> world_stamp_;
   std::vector<long long> body_stamp_;  // per atom: the evaluation its Body record is of
   long long evaluation_ = 1;           // force evaluations so far + 1 (pre_force)
   std::vector<int> pending_world_;     // scratch of ensure_world_triangles and ensure_bodies

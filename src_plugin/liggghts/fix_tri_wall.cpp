@@ -234,10 +234,6 @@ void FixTriWall::build_walls(bool update_history, int nthreads) {
     for (int k = 0; k < n; ++k)
       build(k, nodes_, node_velocities_);
   }
-  task_atoms_.clear();
-  for (int k = 0; k < n; ++k)
-    if (!tasks_[k].apart)
-      task_atoms_.push_back(tasks_[k].atom);
 }
 
 tri::PairForceResult FixTriWall::interact(int k, double dt, bool update_history,
@@ -256,6 +252,7 @@ tri::PairForceResult FixTriWall::interact(int k, double dt, bool update_history,
     return tri::apart_result(particle, task.wall, s, dt, history.data(), scratch, stats);
   const tri::SeparationCache cache{settings_.separation ? axis(a, task.mesh) : nullptr,
                                    update_history, task.candidates, true}; // build_walls tested
+  particles_->ensure_world_triangles_of(a);
   return tri::body_interaction(particle, task.wall, s, dt, history.data(), scratch, stats, cache);
 }
 
@@ -270,8 +267,6 @@ void FixTriWall::compute(bool update_history) {
     task_atoms_.push_back(tasks_[k].atom);
   particles_->ensure_bodies(task_atoms_.data(), static_cast<int>(task_atoms_.size()), nthreads);
   build_walls(update_history, nthreads);
-  particles_->ensure_world_triangles(task_atoms_.data(), static_cast<int>(task_atoms_.size()),
-                                     nthreads);
   const double dt = update->dt;
   engine_.run(ntasks_, nthreads,
               [&](std::size_t k, tri::InteractionScratch &scratch, tri::ContactStats &stats) {

@@ -91,8 +91,8 @@ private:
   void compute(bool update_history);
   void collect_tasks();
   // Each task's wall patch and Body; then whether its kept gap or axis proves it apart from the
-  // particle's pose (tri::proven_apart: no world-frame particle triangles needed). Fills
-  // task_atoms_ with the atoms of the other tasks.
+  // particle's pose (tri::proven_apart: no world-frame particle triangles needed; the other
+  // tasks ask for them as they run, FixTriParticles::ensure_world_triangles_of).
   void build_walls(bool update_history, int nthreads);
   void build_wall(int k, std::vector<Eigen::Vector3d> &nodes,
                   std::vector<Eigen::Vector3d> &node_velocities);

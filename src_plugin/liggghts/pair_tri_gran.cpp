@@ -163,12 +163,6 @@ void PairTriGran::mark_apart(bool update_history, int nthreads) {
     for (int k = 0; k < n; ++k)
       mark(k);
   }
-  world_atoms_.clear();
-  for (const Task &task : tasks_)
-    if (!task.apart) {
-      world_atoms_.push_back(task.i);
-      world_atoms_.push_back(task.j);
-    }
 }
 
 // A task's kept state (candidates, contact history, axis) is scattered over the heap; asked for
@@ -194,13 +188,15 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
   const int nthreads = tri_liggghts::pair_loop_threads(settings_.loop, tasks_.size());
   particles_->ensure_bodies(task_atoms_.data(), static_cast<int>(task_atoms_.size()), nthreads);
   mark_apart(update_history, nthreads);
-  particles_->ensure_world_triangles(world_atoms_.data(), static_cast<int>(world_atoms_.size()),
-                                     nthreads);
   engine_.run(tasks_.size(), nthreads,
               [&](std::size_t k, tri::InteractionScratch &scratch, tri::ContactStats &stats) {
                 if (k + kPrefetchAhead < tasks_.size())
                   prefetch(tasks_[k + kPrefetchAhead]);
                 const Task &task = tasks_[k];
+                if (!task.apart) { // world-frame triangles as they are needed (cache)
+                  particles_->ensure_world_triangles_of(task.i);
+                  particles_->ensure_world_triangles_of(task.j);
+                }
                 tri::PairForceResult r = evaluate(task, scratch, stats, dt, update_history);
                 // With newton off a pair with a ghost is evaluated by both owners' ranks (or,
                 // across a periodic boundary, twice on one): half its energy each, so that

@@ -85,10 +85,8 @@ private:
   tri::PairForceResult evaluate(const Task &task, tri::InteractionScratch &scratch,
                                 tri::ContactStats &stats, double dt, bool update_history);
   // Sets each task's `apart` (tri::proven_apart, from the atoms' Body records without their
-  // triangles) and collects in world_atoms_ the atoms of the others: only they need
-  // world-frame triangles this step.
+  // triangles): only the others' atoms need world-frame triangles this step.
   void mark_apart(bool update_history, int nthreads);
-  std::vector<int> world_atoms_;
   class FixTriParticles *particles_ = nullptr;
   int board_slot_ = -1;
   tri_liggghts::ContactSettings settings_;
