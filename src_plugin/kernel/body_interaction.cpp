@@ -238,6 +238,18 @@ PairForceResult apart_result(const Body &a, const Body &b, const InteractionSett
   return pair_contact_force(scratch.points, a.state, b.state, s.coefficients, dt, history);
 }
 
+bool apart_needs_nothing(const double *stored_history) {
+  // -0.0 counts as clear: the flipped view writes it back for a cleared value
+  return !stored_history || std::all_of(stored_history, stored_history + kHistoryDoubles,
+                                        [](double v) { return v == 0.0; });
+}
+
+PairForceResult apart_result(ContactStats &stats) {
+  // pair_contact_force of no contacts: the zero result
+  ++stats.bodies_separated;
+  return PairForceResult{};
+}
+
 PairForceResult body_interaction(const Body &a, const Body &b, const InteractionSettings &s,
                                  double dt, double *history, InteractionScratch &scratch,
                                  ContactStats &stats, SeparationCache cache) {

@@ -138,6 +138,11 @@ bool proven_apart(const Body &a, const Body &b, const InteractionSettings &s,
 PairForceResult apart_result(const Body &a, const Body &b, const InteractionSettings &s,
                              double dt, double *history, InteractionScratch &scratch,
                              ContactStats &stats);
+// apart_result for a pair whose history (as stored by the host, either orientation) is clear
+// or not kept: nothing to clear, so neither the history nor the coefficients are needed. Most
+// neighbour pairs of a pile are apart with a clear history; the host skips their view.
+bool apart_needs_nothing(const double *stored_history);
+PairForceResult apart_result(ContactStats &stats);
 
 // The reach (m) a search keeps its candidates with: coherence x cutoff, or, for bodies that
 // move faster, what their relative motion covers in kCandidateSteps steps (translation plus

@@ -241,6 +241,9 @@ tri::PairForceResult FixTriWall::interact(int k, double dt, bool update_history,
                                           tri::ContactStats &stats) {
   const Task &task = tasks_[k];
   const int a = task.atom;
+  // (without a history model the values stay zero: the same zero result)
+  if (task.apart && tri::apart_needs_nothing(history_[a] + task.mesh * tri::kHistoryDoubles))
+    return tri::apart_result(stats);
   const tri::Body &particle = particles_->body(a);
   tri::InteractionSettings s = settings_.interaction;
   s.coefficients = materials_.get(atom->type[a], meshes_[task.mesh]->atomTypeWall());

@@ -124,6 +124,8 @@ PairTriGran::TaskView PairTriGran::view(const Task &task) {
 tri::PairForceResult PairTriGran::evaluate(const Task &task, tri::InteractionScratch &scratch,
                                            tri::ContactStats &stats, double dt,
                                            bool update_history) {
+  if (task.apart && tri::apart_needs_nothing(task.history))
+    return tri::apart_result(stats); // the axis stays as it is: its view would write it back
   TaskView v = view(task);
   // mark_apart has tested the kept gap and axis.
   const tri::SeparationCache cache{task.axis ? v.axis : nullptr, update_history, task.candidates,
