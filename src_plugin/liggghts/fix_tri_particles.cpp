@@ -24,6 +24,7 @@
 #include <cstdio>
 #include <cstring>
 #include <stdexcept>
+#include <thread>
 
 #include <mpi.h>
 #include <string>
@@ -313,12 +314,15 @@ void FixTriParticles::ensure_world_triangles_of(int i) {
   // GCC's atomic builtins on the plain stamp (C++17 has no atomic_ref): every other access to
   // the stamps is outside parallel regions.
   long long *stamp = &world_stamp_[i];
-  for (;;) {
+  for (int spins = 0;; ++spins) {
     long long seen = __atomic_load_n(stamp, __ATOMIC_ACQUIRE);
     if (seen == evaluation_)
       return;
-    if (seen == -evaluation_) { // another thread's, ~0.1 us
-      __builtin_ia32_pause();
+    if (seen == -evaluation_) { // another thread's, ~0.1 us; unless the host has more threads
+      if (spins < 4096)         // than cores and that one was descheduled: then give way
+        __builtin_ia32_pause();
+      else
+        std::this_thread::yield();
       continue;
     }
     if (!__atomic_compare_exchange_n(stamp, &seen, -evaluation_, false, __ATOMIC_ACQ_REL,
