@@ -302,9 +302,6 @@ void FixTriParticles::once_per_evaluation(const int *atoms, int n, int threads,
   }
 }
 
-void FixTriParticles::ensure_world_triangles(const int *atoms, int n, int threads) {
-  once_per_evaluation(atoms, n, threads, world_stamp_, [this](int i) { transform_atom(i); });
-}
 
 void FixTriParticles::ensure_bodies(const int *atoms, int n, int threads) {
   once_per_evaluation(atoms, n, threads, body_stamp_, [this](int i) { build_body(i); });
@@ -343,7 +340,7 @@ void FixTriParticles::update_world_triangles(int n) {
   std::vector<int> all(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i)
     all[i] = i;
-  ensure_world_triangles(all.data(), n);
+  once_per_evaluation(all.data(), n, 1, world_stamp_, [this](int i) { transform_atom(i); });
 }
 
 /* ---------------- per-atom storage: the LIGGGHTS callbacks ---------------- */

@@ -129,8 +129,8 @@ public:
   tri_liggghts::TypeBodies type_bodies() const;
   // Where the contact styles publish, and their readers read (contact_board.h).
   tri_liggghts::ContactBoard &board() { return board_; }
-  // World-frame triangles of owned and ghost atom i: valid once ensure_world_triangles (or
-  // update_world_triangles, ensure_world_triangles_of) has included i in this force evaluation.
+  // World-frame triangles of owned and ghost atom i: valid once ensure_world_triangles_of(i) or
+  // update_world_triangles has included i in this force evaluation.
   const tri::TriangleSoA &world_triangles(int i) const { return world_[i]; }
   // Atom i (owned or ghost) as the contact kernel sees it: its world-frame triangles, soft
   // layer, edge lengths, and x, v, omega, rmass. Valid like world_triangles(i): built with
@@ -141,17 +141,14 @@ public:
   // enough for the kernel to prove a pair apart by its kept gap or axis (tri::proven_apart).
   const tri::Body &body(int i) const { return bodies_[i]; }
   // Body records (not the world-frame triangles) of the atoms, at most once per force
-  // evaluation; as ensure_world_triangles.
+  // evaluation (pre_force starts a new one), before a contact style's loop. `threads` > 1
+  // shares the atoms among OpenMP threads.
   void ensure_bodies(const int *atoms, int n, int threads = 1);
-  // World-frame triangles only where needed (issue 12, item 4): a reader calls this for the
-  // atoms it reads before it reads them (never inside a parallel loop; the contact styles'
-  // tasks use ensure_world_triangles_of instead); an atom's
-  // triangles are computed from x and its quaternion at most once per force evaluation
-  // (pre_force starts a new one). `threads` > 1 shares the atoms among OpenMP threads.
-  void ensure_world_triangles(const int *atoms, int n, int threads = 1);
-  // The same for atoms [0, n).
+  // World-frame triangles only where needed (issue 12, item 4), each atom's computed from x and
+  // its quaternion at most once per force evaluation. For atoms [0, n), outside a parallel
+  // loop (output):
   void update_world_triangles(int n);
-  // One atom's world-frame triangles, from inside a contact style's parallel loop: the first
+  // For one atom, from inside a contact style's parallel loop: the first
   // task (on any thread) that needs atom i transforms it and the others wait for it. Computed
   // just before they are read, the triangles are in that core's cache when the kernel gathers
   // them; computed for every atom first, a pile's 3 MB of them had left the cache by then.
@@ -174,7 +171,7 @@ private:
   std::vector<long long> world_stamp_;
   std::vector<long long> body_stamp_;  // per atom: the evaluation its Body record is of
   long long evaluation_ = 1;           // force evaluations so far + 1 (pre_force)
-  std::vector<int> pending_world_;     // scratch of ensure_world_triangles and ensure_bodies
+  std::vector<int> pending_world_;     // scratch of once_per_evaluation
   void build_body(int i);              // bodies_[i] without its triangles
   void transform_atom(int i);          // bodies_[i] (if not built yet) and world_[i]
   // Runs `work` on each atom of `atoms` whose `stamp` is not this evaluation's, once.
