@@ -373,9 +373,15 @@ DistanceIntegral polygon_distance_integral(const Vector3d *vertices, int n, cons
   const Vector3d u = normal.cross(Vector3d::Unit(k)).normalized();
   const Vector3d v = normal.cross(u);
   auto project = [&](const Vector3d &x) { return Vector2d((x - p).dot(u), (x - p).dot(v)); };
-  // Antiderivative along an edge's line at distance h: (h t rho + h^3 asinh(t / h)) / 6.
-  auto primitive = [](double h, double t) {
-    return (h * t * std::sqrt(h * h + t * t) + h * h * h * std::asinh(t / h)) / 6.0;
+  // Antiderivative along an edge's line at distance h: (h t rho + h^3 asinh(t / h)) / 6, taken
+  // from ta to tb with one logarithm instead of two asinh: asinh(t / h) = log(g(t) / h) with
+  // g(t) = t + rho, written h^2 / (rho - t) for t < 0 (no cancellation; (t + rho)(rho - t) = h^2).
+  auto edge_part = [](double h, double ta, double tb) {
+    const double h2 = h * h;
+    const double ra = std::sqrt(h2 + ta * ta), rb = std::sqrt(h2 + tb * tb);
+    const double ga = ta >= 0.0 ? ta + ra : h2 / (ra - ta);
+    const double gb = tb >= 0.0 ? tb + rb : h2 / (rb - tb);
+    return (h * (tb * rb - ta * ra) + h2 * h * std::log(gb / ga)) / 6.0;
   };
   double area = 0.0, distance = 0.0;
   Vector2d a = project(vertices[n - 1]);
@@ -389,7 +395,7 @@ DistanceIntegral polygon_distance_integral(const Vector3d *vertices, int n, cons
       const Vector2d e = edge / length;
       const double h = std::abs(twice) / length;
       const double ta = a.dot(e), tb = b.dot(e); // positions from the foot of the perpendicular
-      const double part = primitive(h, tb) - primitive(h, ta);
+      const double part = edge_part(h, ta, tb);
       distance += twice > 0.0 ? part : -part;
     }
     a = b;

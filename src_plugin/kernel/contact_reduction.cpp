@@ -162,9 +162,10 @@ bool member_polygon(const Raw &r, const Faces &faces, double layer, ContactPolyg
 
 // A polygon member's overlap, exact: layer minus the brute-force distance of its two triangles
 // (triangle_distance.h, exact to rounding, where the hybrid kernel is exact to its tolerance);
-// the raw overlap of an intersecting or flipped (sunk) member.
+// the raw overlap of an intersecting or flipped (sunk) member, or of one whose distance the
+// kernel certified exact already (a third of them: brute-force fallbacks, most of them).
 double exact_overlap(const Raw &r, const Faces &faces, double layer) {
-  if (r.intersecting || r.overlap > layer)
+  if (r.intersecting || r.overlap > layer || r.exact)
     return r.overlap;
   const TriangleSoA &ta = *faces.a, &tb = *faces.b;
   const Vector3d a[3] = {ta.vertex(r.tri_a, 0), ta.vertex(r.tri_a, 1), ta.vertex(r.tri_a, 2)};
@@ -851,6 +852,7 @@ void reduce(const TriangleContact *contacts, int n, const Faces &faces, double e
     r.tri_a = c.tri_a;
     r.tri_b = c.tri_b;
     r.intersecting = c.intersecting;
+    r.exact = c.exact;
   }
 
   switch (params.method) {

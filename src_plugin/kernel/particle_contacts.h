@@ -76,6 +76,9 @@ struct TriangleContact {            // one triangle pair closer than eps_a + eps
   bool intersecting;
   double penetration_depth; // intersecting only: translation of b along normal that
                             // separates the triangles; 0 otherwise
+  // The distance is exact (brute force, or a penalty result whose certified lower bound
+  // reaches it), not only within the kernel's tolerance: the reduction need not recompute it.
+  bool exact = false;
 };
 
 // Values for one or more calls, summed by the caller; no globals. The penalty counters
