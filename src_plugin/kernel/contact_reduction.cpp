@@ -170,6 +170,10 @@ double exact_overlap(const Raw &r, const Faces &faces, double layer) {
   const TriangleSoA &ta = *faces.a, &tb = *faces.b;
   const Vector3d a[3] = {ta.vertex(r.tri_a, 0), ta.vertex(r.tri_a, 1), ta.vertex(r.tri_a, 2)};
   const Vector3d b[3] = {tb.vertex(r.tri_b, 0), tb.vertex(r.tri_b, 1), tb.vertex(r.tri_b, 2)};
+  if (r.apart) { // the same value (to rounding) without the intersection test
+    const double distance = separated_triangle_distance(a, b);
+    return distance < 0.0 ? r.overlap : layer - distance;
+  }
   const TrianglePairDistance d = triangle_distance(a, b);
   return d.intersecting ? r.overlap : layer - d.distance;
 }
@@ -853,6 +857,7 @@ void reduce(const TriangleContact *contacts, int n, const Faces &faces, double e
     r.tri_b = c.tri_b;
     r.intersecting = c.intersecting;
     r.exact = c.exact;
+    r.apart = c.apart;
   }
 
   switch (params.method) {

@@ -336,7 +336,7 @@ struct ReductionWorkspace {
     double overlap, distance;
     int tri_a, tri_b;
     bool intersecting;
-    bool exact; // the distance is exact (TriangleContact::exact)
+    bool exact, apart; // TriangleContact's
   };
   std::vector<Raw> raw;
   struct Key { // a triangle contact that counts: its overlap, index and triangles; sorted into

@@ -79,6 +79,8 @@ struct TriangleContact {            // one triangle pair closer than eps_a + eps
   // The distance is exact (brute force, or a penalty result whose certified lower bound
   // reaches it), not only within the kernel's tolerance: the reduction need not recompute it.
   bool exact = false;
+  // The triangles are certified not to intersect (a positive lower bound of their distance).
+  bool apart = false;
 };
 
 // Values for one or more calls, summed by the caller; no globals. The penalty counters

@@ -69,6 +69,14 @@ TrianglePairDistance triangle_distance(const Eigen::Vector3d a[3], const Eigen::
   return r;
 }
 
+double separated_triangle_distance(const Eigen::Vector3d a[3], const Eigen::Vector3d b[3]) {
+  const P3 pa[3] = {to_p3(a[0]), to_p3(a[1]), to_p3(a[2])};
+  const P3 pb[3] = {to_p3(b[0]), to_p3(b[1]), to_p3(b[2])};
+  const geom::Face fa = geom::face_of(pa), fb = geom::face_of(pb);
+  const geom::CheckResult best = geom::fifteen_checks(pa, pb, fa, fb);
+  return best.dist2 <= touch_dist2(fa, fb) ? -1.0 : std::sqrt(best.dist2);
+}
+
 namespace {
 
 // One lane of brute_force_block. A separate function so that its locals are not seen by the

@@ -48,6 +48,13 @@ struct TrianglePairDistance {
 // Scalar reference: one pair, with branches.
 TrianglePairDistance triangle_distance(const Eigen::Vector3d a[3], const Eigen::Vector3d b[3]);
 
+// The distance of two triangles known not to intersect (a certified positive lower bound of
+// their distance, penalty_distance.h): the 15 checks alone, without the intersection test,
+// closest points or normal. Equal to triangle_distance(a, b).distance to rounding (the same
+// checks; FMA contraction may differ) wherever that is > 0; a negative value where the checks find the triangles touching (within
+// kTouchRatio, where triangle_distance reports an intersection).
+double separated_triangle_distance(const Eigen::Vector3d a[3], const Eigen::Vector3d b[3]);
+
 // The same for the pairs in lanes 0..n-1 of a block (n <= kPairLanes; lanes n.. are
 // ignored). The 15 checks and the intersection test run vectorised across all lanes; lanes
 // that touch or intersect are finished by triangle_distance. Results are bit-identical to

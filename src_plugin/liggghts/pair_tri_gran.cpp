@@ -199,7 +199,10 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
                   particles_->ensure_world_triangles_of(task.i);
                   particles_->ensure_world_triangles_of(task.j);
                 }
+                const std::size_t queued = scratch.jobs.size();
                 tri::PairForceResult r = evaluate(task, scratch, stats, dt, update_history);
+                if (scratch.jobs.size() != queued)
+                  return r; // its kernel deferred: the resumed call returns the result
                 // With newton off a pair with a ghost is evaluated by both owners' ranks (or,
                 // across a periodic boundary, twice on one): half its energy each, so that
                 // compute tri/stats sums every contact's energy once.

@@ -160,3 +160,30 @@ TEST(TriangleDistance, BlockAgreesWithScalarOnEveryLane) {
     }
   }
 }
+
+// The reduction's shortcut for pairs the kernel certified apart: the same distance to rounding
+// (the same operations; FMA contraction may differ between the two inlinings) wherever
+// triangle_distance finds them separated; negative where it finds them touching.
+TEST(TriangleDistance, SeparatedDistanceMatchesTheFullOne) {
+  std::vector<TriangleCase> cases = adversarial_cases(1.0, 21);
+  for (const auto &c : adversarial_cases(1e-6, 22))
+    cases.push_back(c);
+  for (const auto &c : adversarial_cases(1e3, 23))
+    cases.push_back(c);
+  int separated = 0, touching = 0;
+  for (const auto &c : cases) {
+    const TrianglePairDistance full = triangle_distance(c.a, c.b);
+    const double d = separated_triangle_distance(c.a, c.b);
+    if (!full.intersecting) {
+      EXPECT_NEAR(d, full.distance, 1e-15 * (c.a[0].norm() + c.b[0].norm())) << c.name;
+      ++separated;
+    } else if (d < 0.0) {
+      ++touching; // touching within kTouchRatio: no distance
+    } else {
+      // crossing edges: not a pair the shortcut is for; its 15 checks see only the edges
+      EXPECT_GE(d, 0.0) << c.name;
+    }
+  }
+  EXPECT_GT(separated, 100);
+  EXPECT_GT(touching, 0);
+}
