@@ -69,12 +69,44 @@ TrianglePairDistance triangle_distance(const Eigen::Vector3d a[3], const Eigen::
   return r;
 }
 
+namespace {
+
+// The squared distance of triangle t from face f where a vertex of t over f is certainly the
+// closest pair: every vertex of t strictly on one side of f's plane, and the one nearest the
+// plane with its foot in f. No point of t is nearer the plane than that vertex (a triangle's
+// extreme along a direction is a vertex), so no pair of points is nearer than its height, and
+// the vertex and its foot attain it. -1 where that does not hold (or f is a sliver).
+double vertex_over_face_dist2(const P3 t[3], const geom::Face &f) {
+  double h[3];
+  for (int k = 0; k < 3; ++k)
+    h[k] = geom::dot(t[k] - f.v0, f.n);
+  const bool above = h[0] > 0.0 && h[1] > 0.0 && h[2] > 0.0;
+  const bool below = h[0] < 0.0 && h[1] < 0.0 && h[2] < 0.0;
+  if (!(above || below))
+    return -1.0;
+  int k = 0;
+  for (int i = 1; i < 3; ++i)
+    if (std::fabs(h[i]) < std::fabs(h[k]))
+      k = i;
+  P3 foot;
+  const double d2 = geom::point_face_dist2(t[k], f, foot); // inf: foot outside, or a sliver
+  return std::isfinite(d2) ? d2 : -1.0;
+}
+
+} // namespace
+
 double separated_triangle_distance(const Eigen::Vector3d a[3], const Eigen::Vector3d b[3]) {
   const P3 pa[3] = {to_p3(a[0]), to_p3(a[1]), to_p3(a[2])};
   const P3 pb[3] = {to_p3(b[0]), to_p3(b[1]), to_p3(b[2])};
   const geom::Face fa = geom::face_of(pa), fb = geom::face_of(pb);
-  const geom::CheckResult best = geom::fifteen_checks(pa, pb, fa, fb);
-  return best.dist2 <= touch_dist2(fa, fb) ? -1.0 : std::sqrt(best.dist2);
+  // Nearly parallel faces (the reduction's polygon members) mostly have a vertex over the
+  // other face as their closest pair: certified, it is the distance without the 15 checks.
+  double dist2 = vertex_over_face_dist2(pb, fa);
+  if (dist2 < 0.0)
+    dist2 = vertex_over_face_dist2(pa, fb);
+  if (dist2 < 0.0)
+    dist2 = geom::fifteen_checks(pa, pb, fa, fb).dist2;
+  return dist2 <= touch_dist2(fa, fb) ? -1.0 : std::sqrt(dist2);
 }
 
 namespace {

@@ -49,10 +49,12 @@ struct TrianglePairDistance {
 TrianglePairDistance triangle_distance(const Eigen::Vector3d a[3], const Eigen::Vector3d b[3]);
 
 // The distance of two triangles known not to intersect (a certified positive lower bound of
-// their distance, penalty_distance.h): the 15 checks alone, without the intersection test,
-// closest points or normal. Equal to triangle_distance(a, b).distance to rounding (the same
-// checks; FMA contraction may differ) wherever that is > 0; a negative value where the checks find the triangles touching (within
-// kTouchRatio, where triangle_distance reports an intersection).
+// their distance, penalty_distance.h), without the intersection test, closest points or
+// normal: where a vertex of one lies over the other's face, nearer its plane than the rest of
+// its triangle (the closest pair of most nearly parallel faces), that vertex's height; else
+// the 15 checks. Equal to triangle_distance(a, b).distance to rounding wherever that is > 0;
+// a negative value where the triangles touch (within kTouchRatio, where triangle_distance
+// reports an intersection).
 double separated_triangle_distance(const Eigen::Vector3d a[3], const Eigen::Vector3d b[3]);
 
 // The same for the pairs in lanes 0..n-1 of a block (n <= kPairLanes; lanes n.. are

@@ -7,6 +7,8 @@
 #include <fcl/narrowphase/detail/primitive_shape_algorithm/triangle_distance.h>
 #include <gtest/gtest.h>
 
+#include <random>
+
 #include <Eigen/Geometry>
 
 using namespace tri;
@@ -186,4 +188,26 @@ TEST(TriangleDistance, SeparatedDistanceMatchesTheFullOne) {
   }
   EXPECT_GT(separated, 100);
   EXPECT_GT(touching, 0);
+
+  // Nearly parallel faces (the reduction's polygon members), overlapping in projection or
+  // beside each other: closest pairs of every kind (a vertex over a face, nearer or not than
+  // the rest of its triangle; crossing and parallel edges), at three scales.
+  std::mt19937_64 rng(24);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (double scale : {1e-6, 1.0, 1e3}) {
+    const Eigen::Vector3d far(3.0, -2.0, 5.0); // away from the origin, as particles are
+    for (int trial = 0; trial < 20000; ++trial) {
+      const Eigen::Vector3d shift(0.8 * u(rng), 0.8 * u(rng), 0.05 + 0.04 * u(rng));
+      Eigen::Vector3d a[3], b[3];
+      for (int k = 0; k < 3; ++k) {
+        a[k] = scale * (far + Eigen::Vector3d(u(rng), u(rng), 0.03 * u(rng)));
+        b[k] = scale * (far + shift + Eigen::Vector3d(u(rng), u(rng), 0.03 * u(rng)));
+      }
+      const TrianglePairDistance full = triangle_distance(a, b);
+      if (full.intersecting)
+        continue;
+      EXPECT_NEAR(separated_triangle_distance(a, b), full.distance, 1e-15 * scale * 10.0)
+          << "scale " << scale << " trial " << trial;
+    }
+  }
 }
