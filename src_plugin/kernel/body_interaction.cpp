@@ -1,5 +1,6 @@
 #include "body_interaction.h"
 
+#include "contact_history.h"
 #include "point_triangle.h"
 #include "separating_axis.h"
 
@@ -239,9 +240,11 @@ PairForceResult apart_result(const Body &a, const Body &b, const InteractionSett
 }
 
 bool apart_needs_nothing(const double *stored_history) {
-  // -0.0 counts as clear: the flipped view writes it back for a cleared value
-  return !stored_history || std::all_of(stored_history, stored_history + kHistoryDoubles,
-                                        [](double v) { return v == 0.0; });
+  // The history is written compactly (contact_history.h): slot 0 holds the first contact's unit
+  // normal, and with no contact every value is zero. So an empty slot 0 is a clear history,
+  // read from its first cache line rather than all five (-0.0 counts as empty: the flipped
+  // view writes it back for a cleared value).
+  return !stored_history || !slot_occupied(stored_history, 0);
 }
 
 PairForceResult apart_result(ContactStats &stats) {

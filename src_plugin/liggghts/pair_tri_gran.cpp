@@ -212,7 +212,12 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
                 // once evaluate() has written its history back.
                 if (task.touching) { // the tangential history or the axis: LIGGGHTS keeps all
                   const double *values = task.touching_values; // or nothing
-                  *task.touching = std::any_of(values, values + dnum_pairgran,
+                  // An apart pair's clear history (its slot 0 empty) is all zero: only the
+                  // values after it are read.
+                  const bool clear = task.apart && tri::apart_needs_nothing(task.history);
+                  const double *from =
+                      clear && task.history == values ? values + tri::kHistoryDoubles : values;
+                  *task.touching = std::any_of(from, values + dnum_pairgran,
                                                [](double v) { return v != 0.0; });
                 }
                 const tri::BodyState &si = particles_->body(task.i).state;
