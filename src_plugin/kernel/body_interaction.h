@@ -149,8 +149,10 @@ PairForceResult apart_result(ContactStats &stats);
 // each spin times its radius, a wall's radius 0), at most kCandidateReachCap cutoffs. A choice
 // of cost only (candidate_cache.h proves each reuse from the actual motion): too small, and
 // colliding bodies search afresh every step (a granular gas); too large, and a list holds
-// pairs that never come close.
-constexpr double kCandidateSteps = 4.0, kCandidateReachCap = 1.0;
+// pairs that never come close. 8 steps rather than 4: in the paper's hopper and a settled pile
+// 1 to 3 % less time (a search costs as much as some 40 kernel pairs), in the granular gas
+// 13 % more pairs tested and about 5 % more time.
+constexpr double kCandidateSteps = 8.0, kCandidateReachCap = 1.0;
 double candidate_reach(const Body &a, const Body &b, double coherence, double cutoff, double dt);
 
 } // namespace tri
