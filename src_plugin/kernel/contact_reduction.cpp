@@ -163,7 +163,7 @@ bool member_polygon(const Raw &r, const Faces &faces, double layer, ContactPolyg
 // A polygon member's overlap, exact: layer minus the brute-force distance of its two triangles
 // (triangle_distance.h, exact to rounding, where the hybrid kernel is exact to its tolerance);
 // the raw overlap of an intersecting or flipped (sunk) member, or of one whose distance the
-// kernel certified exact already (a third of them: brute-force fallbacks, most of them).
+// kernel certified exact already (about a third of them, mostly brute-force fallbacks).
 double exact_overlap(const Raw &r, const Faces &faces, double layer) {
   if (r.intersecting || r.overlap > layer || r.exact)
     return r.overlap;

@@ -302,7 +302,6 @@ void FixTriParticles::once_per_evaluation(const int *atoms, int n, int threads,
   }
 }
 
-
 void FixTriParticles::ensure_bodies(const int *atoms, int n, int threads) {
   once_per_evaluation(atoms, n, threads, body_stamp_, [this](int i) { build_body(i); });
 }

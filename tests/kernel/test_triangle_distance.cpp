@@ -164,7 +164,7 @@ TEST(TriangleDistance, BlockAgreesWithScalarOnEveryLane) {
 }
 
 // The reduction's shortcut for pairs the kernel certified apart: the same distance to rounding
-// (the same operations; FMA contraction may differ between the two inlinings) wherever
+// (by a vertex's height where that is certified, else the same 15 checks) wherever
 // triangle_distance finds them separated; negative where it finds them touching.
 TEST(TriangleDistance, SeparatedDistanceMatchesTheFullOne) {
   std::vector<TriangleCase> cases = adversarial_cases(1.0, 21);
