@@ -126,6 +126,9 @@ constexpr double kCurvedFacetsFull = 8.0;
 // Members within this fraction of the layer of the deepest one share the deepest point, with
 // weights falling linearly to zero across it (header, step 5).
 constexpr double kDeepestTaper = 1e-3;
+// Members closer than this fraction of the layer, and tied in overlap (kNormalDepthBand), are
+// one closest point seen by several triangle pairs: the smooth maximum counts it once (step 5).
+constexpr double kSameFeatureDistance = 1e-4;
 
 // The two bodies' triangles (never null).
 struct Faces {
@@ -214,8 +217,9 @@ double smoothstep(double x) {
 
 // The class's deepest overlap as the energy sees it (header, step 5), a smooth maximum F of the
 // overlaps o_i of its members raw[cands[i]]. With a_i = 1 - (D - o_i) / taper (D the largest o_i; only a_i > 0
-// count), weights m_i = a_i^2 / sum a_j^2 and u <= 0 solving sum m_i (a_i - u)^2 = 1:
-//   u = A - sqrt(A^2 + 1 - B),  A = sum a^3 / sum a^2,  B = sum a^4 / sum a^2,
+// count), w_i the member's share of its closest point (below), weights m_i = w_i a_i^2 / sum w_j a_j^2
+// and u <= 0 solving sum m_i (a_i - u)^2 = 1:
+//   u = A - sqrt(A^2 + 1 - B),  A = sum w a^3 / sum w a^2,  B = sum w a^4 / sum w a^2,
 //   F = D + g taper u,  g = smoothstep(D / taper) (F is 0 when a contact starts or ends).
 // F = D for a lone deepest candidate and for any number tied with it (so the overlap of a face
 // or an edge does not depend on how many triangle pairs see it), dips by at most a fraction of
@@ -223,27 +227,25 @@ double smoothstep(double x) {
 // Its gradient gives the point, normal and force: c_k = dF/do_k = g du/da_k, plus, shared by
 // the candidates tied with the deepest (tie_band), 1 + taper u g' - g sum_i du/da_i.
 // normal_scale = |sum c_k n_k|: the force is kn F normal_scale along `normal`. `weights`
-// receives the c_k.
+// receives the c_k, `share` the w_k (same_point: the distance within which tied members are one
+// point).
 struct SmoothDeepest {
   double overlap = 0.0, normal_scale = 1.0;
   Vector3d point, normal;
 };
 SmoothDeepest smooth_deepest(const std::vector<Raw> &raw, const std::vector<int> &cands,
-                             double taper, double tie_band, const Vector3d &fallback_point,
-                             const Vector3d &fallback_normal, std::vector<double> &weights) {
+                             double taper, double tie_band, double same_point,
+                             const Vector3d &fallback_point, const Vector3d &fallback_normal,
+                             std::vector<double> &weights, std::vector<double> &share) {
   double D = -std::numeric_limits<double>::infinity();
   for (int i : cands)
     D = std::max(D, raw[i].overlap);
-  double s2 = 0.0, s3 = 0.0, s4 = 0.0;
   int num_top = 0, num_active = 0, last_active = 0;
   weights.resize(cands.size()); // a_k for now
   for (std::size_t k = 0; k < cands.size(); ++k) {
     const double a = 1.0 - (D - raw[cands[k]].overlap) / taper;
     weights[k] = a;
     if (a > 0.0) {
-      s2 += a * a;
-      s3 += a * a * a;
-      s4 += a * a * a * a;
       ++num_active;
       last_active = static_cast<int>(k);
     }
@@ -259,7 +261,34 @@ SmoothDeepest smooth_deepest(const std::vector<Raw> &raw, const std::vector<int>
     out.normal = finite(d.normal) ? d.normal : fallback_normal; // unit (raw_normal)
     return out;
   }
-  const double A = s3 / s2, B = s4 / s2; // s2 >= 1: the deepest has a = 1
+  // Each closest point counts once, however many triangle pairs see it: an edge crossing a
+  // face's edge is seen by up to four, and when a pair's closest point jumps from one end of a
+  // parallel edge to the other (two crossings tied in depth), the counts of the two points
+  // swap. Counted per member, the smooth maximum's weights (and with them the point of the
+  // force) would jump there by a third of the distance between the points, so a member's share
+  // is 1 / (the active members at its point with its overlap). Ties within tie_band only: a
+  // merge or split then moves F by at most half of it.
+  double s2 = 0.0, s3 = 0.0, s4 = 0.0;
+  share.assign(cands.size(), 0.0);
+  const double same2 = same_point * same_point;
+  for (std::size_t k = 0; k < cands.size(); ++k) {
+    const double a = weights[k];
+    if (!(a > 0.0))
+      continue;
+    const Raw &rk = raw[cands[k]];
+    int count = 0;
+    for (std::size_t j = 0; j < cands.size(); ++j) {
+      const Raw &rj = raw[cands[j]];
+      count += weights[j] > 0.0 && std::abs(rj.overlap - rk.overlap) <= tie_band &&
+               (rj.point - rk.point).squaredNorm() <= same2;
+    }
+    const double w = 1.0 / std::max(1, count);
+    share[k] = w;
+    s2 += w * a * a;
+    s3 += w * a * a * a;
+    s4 += w * a * a * a * a;
+  }
+  const double A = s3 / s2, B = s4 / s2; // s2 >= 1 to rounding: the deepest point has a = 1
   const double R = std::sqrt(std::max(0.0, A * A + 1.0 - B));
   const double u = A - R;
   const double x = D / taper;
@@ -269,15 +298,15 @@ SmoothDeepest smooth_deepest(const std::vector<Raw> &raw, const std::vector<int>
   std::vector<double> &slope = weights; // a_k, then du/da_k, then c_k in place
   double sum_slope = 0.0;
   const double inv_s2s2 = 1.0 / (s2 * s2);
-  for (double &w : slope) {
-    const double a = w;
+  for (std::size_t k = 0; k < slope.size(); ++k) {
+    const double a = slope[k];
     double du = 0.0;
     if (a > 0.0 && R > 0.0) {
-      const double dA = (3.0 * a * s2 - 2.0 * s3) * a * inv_s2s2;
-      const double dB = (4.0 * a * a * s2 - 2.0 * s4) * a * inv_s2s2;
+      const double dA = share[k] * (3.0 * a * s2 - 2.0 * s3) * a * inv_s2s2;
+      const double dB = share[k] * (4.0 * a * a * s2 - 2.0 * s4) * a * inv_s2s2;
       du = dA - (A * dA - 0.5 * dB) / R;
     }
-    w = du;
+    slope[k] = du;
     sum_slope += du;
   }
   const double top_share = (1.0 + taper * u * g_slope - g * sum_slope) / std::max(1, num_top);
@@ -425,8 +454,9 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
 
   const Vector3d fallback_normal = finite(s.normal) ? s.normal : ref;
   if (num_polygons == 0) {
-    const SmoothDeepest sd = smooth_deepest(raw, plain, taper, kNormalDepthBand * layer, s.point,
-                                            fallback_normal, work.smooth_scratch);
+    const SmoothDeepest sd =
+        smooth_deepest(raw, plain, taper, kNormalDepthBand * layer, kSameFeatureDistance * layer,
+                       s.point, fallback_normal, work.smooth_scratch, work.smooth_share);
     p.point = sd.point;
     p.normal = sd.normal;
     p.overlap = sd.overlap * sd.normal_scale;
