@@ -10,7 +10,7 @@ void InteractionEngine::prepare(std::size_t n, int threads) {
   if (static_cast<int>(deferred_.size()) < threads)
     deferred_.resize(threads);
   thread_stats_.assign(threads, ThreadStats{});
-  results_.resize(n); // every task writes its own (a failing one: the zero result), on the threads
+  results_.assign(n, PairForceResult{});
   failed_task_ = n;
   failure_.clear();
 }
@@ -78,8 +78,8 @@ void InteractionEngine::finish(int threads) {
 
 void InteractionEngine::contribute(std::size_t slot, int atom, long long partner,
                                    const Eigen::Vector3d &force, const Eigen::Vector3d &torque) {
-  contribution_atoms_[slot] = atom;
   Contribution &c = contributions_[slot];
+  c.atom = atom;
   c.partner = partner;
   for (int d = 0; d < 3; ++d) {
     c.force[d] = force[d];
@@ -93,16 +93,15 @@ void InteractionEngine::apply(double **f, double **torque, int threads) {
   // atom (stable), then each atom's few slots by partner (insertion sort, stable): a comparison
   // sort of the whole list was 6 % of a settled pile's step. The counting sort moves 4-byte
   // slot numbers, and the per-atom part, most of the work, runs on the threads.
-  const std::vector<int> &atom_of = contribution_atoms_;
-  const std::size_t n = atom_of.size();
+  const std::size_t n = contributions_.size();
   int atoms = 0;
-  for (const int a : atom_of)
-    atoms = std::max(atoms, a + 1);
+  for (const Contribution &c : contributions_)
+    atoms = std::max(atoms, c.atom + 1);
   first_of_atom_.assign(static_cast<std::size_t>(atoms) + 1, 0);
   std::size_t filled = 0;
-  for (const int a : atom_of)
-    if (a >= 0) {
-      ++first_of_atom_[static_cast<std::size_t>(a) + 1];
+  for (const Contribution &c : contributions_)
+    if (c.atom >= 0) {
+      ++first_of_atom_[static_cast<std::size_t>(c.atom) + 1];
       ++filled;
     }
   for (int a = 0; a < atoms; ++a)
@@ -112,8 +111,8 @@ void InteractionEngine::apply(double **f, double **torque, int threads) {
     std::vector<std::size_t> &next = next_of_atom_;
     next.assign(first_of_atom_.begin(), first_of_atom_.end() - 1);
     for (std::size_t k = 0; k < n; ++k)
-      if (atom_of[k] >= 0)
-        sorted_[next[atom_of[k]]++] = static_cast<std::uint32_t>(k);
+      if (contributions_[k].atom >= 0)
+        sorted_[next[contributions_[k].atom]++] = static_cast<std::uint32_t>(k);
   }
   auto sum_atom = [&](int a) {
     const std::size_t begin = first_of_atom_[a], end = first_of_atom_[a + 1];
@@ -143,7 +142,6 @@ void InteractionEngine::apply(double **f, double **torque, int threads) {
 std::size_t InteractionEngine::bytes() const {
   std::size_t b = results_.capacity() * sizeof(PairForceResult) +
                   contributions_.capacity() * sizeof(Contribution) +
-                  contribution_atoms_.capacity() * sizeof(int) +
                   thread_stats_.capacity() * sizeof(ThreadStats) +
                   sorted_.capacity() * sizeof(std::uint32_t) +
                   chunk_tallies_.capacity() * sizeof(InteractionTally) +

@@ -66,13 +66,10 @@ public:
   // torque (rows indexed by atom) in (atom, partner) order, equal keys in slot order, the
   // per-atom sums on `threads` threads (each atom's sum is one thread's: the same bits on any
   // count).
-  void open_contributions(std::size_t slots) {
-    contribution_atoms_.resize(slots);
-    contributions_.resize(slots);
-  }
+  void open_contributions(std::size_t slots) { contributions_.resize(slots); }
   void contribute(std::size_t slot, int atom, long long partner, const Eigen::Vector3d &force,
                   const Eigen::Vector3d &torque);
-  void leave_empty(std::size_t slot) { contribution_atoms_[slot] = -1; }
+  void leave_empty(std::size_t slot) { contributions_[slot].atom = -1; }
   void apply(double **f, double **torque, int threads = 1);
 
   // After run(): part_of(k, part) for every task k, on `threads` threads, each taking one
@@ -86,6 +83,7 @@ public:
 
 private:
   struct Contribution {
+    int atom;
     long long partner;
     double force[3], torque[3];
   };
@@ -97,10 +95,7 @@ private:
   std::vector<ThreadStats> thread_stats_;
   std::vector<std::vector<long>> deferred_;  // per thread: the group's deferred tasks, by job
   std::vector<PairForceResult> results_;
-  // By slot: the atom (< 0: empty), apart from the rest, so that the slots of the many tasks
-  // without a force (most neighbour pairs) cost an int each, not a cache line.
-  std::vector<int> contribution_atoms_;
-  std::vector<Contribution> contributions_;
+  std::vector<Contribution> contributions_; // by slot; atom < 0: empty
   std::vector<std::uint32_t> sorted_;       // apply(): slots by (atom, partner)
   std::vector<std::size_t> first_of_atom_, next_of_atom_; // apply(): the counting sort
   InteractionTally tally_;
@@ -142,10 +137,8 @@ template <class Evaluate> void InteractionEngine::run(std::size_t n, int threads
     try {
       results_[k] = evaluate(static_cast<std::size_t>(k), scratch_[thread], thread_stats_[thread]);
     } catch (const std::exception &e) {
-      results_[k] = PairForceResult{};
       record_failure(static_cast<std::size_t>(k), e.what());
     } catch (...) {
-      results_[k] = PairForceResult{};
       record_failure(static_cast<std::size_t>(k), "unknown exception");
     }
   };
@@ -167,10 +160,8 @@ template <class Evaluate> void InteractionEngine::run(std::size_t n, int threads
     try {
       scratch.run_jobs(thread_stats_[thread]);
     } catch (const std::exception &e) {
-      for (long k : deferred_[thread]) {
-        results_[k] = PairForceResult{};
+      for (long k : deferred_[thread])
         record_failure(static_cast<std::size_t>(k), e.what());
-      }
       return;
     }
     for (std::size_t j = 0; j < deferred_[thread].size(); ++j) {
