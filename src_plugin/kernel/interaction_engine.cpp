@@ -51,91 +51,54 @@ void InteractionEngine::record_failure(std::size_t k, const char *what) {
   }
 }
 
-void InteractionEngine::finish(int threads) {
+void InteractionEngine::finish() {
   tally_ = InteractionTally{};
   for (const ContactStats &s : thread_stats_) // counts: the order does not matter
     tally_.distance += s;
-  const std::size_t n = results_.size();
-  const long chunks = static_cast<long>((n + kTallyChunk - 1) / kTallyChunk);
-  chunk_tallies_.assign(static_cast<std::size_t>(chunks), InteractionTally{});
-  auto chunk = [&](long c) {
-    InteractionTally &t = chunk_tallies_[static_cast<std::size_t>(c)];
-    const std::size_t end = std::min(n, (static_cast<std::size_t>(c) + 1) * kTallyChunk);
-    for (std::size_t k = static_cast<std::size_t>(c) * kTallyChunk; k < end; ++k)
-      t.add(results_[k]);
-  };
-  if (threads > 1 && chunks > 1) {
-#pragma omp parallel for schedule(static) num_threads(threads)
-    for (long c = 0; c < chunks; ++c)
-      chunk(c);
-  } else {
-    for (long c = 0; c < chunks; ++c)
-      chunk(c);
-  }
-  for (const InteractionTally &t : chunk_tallies_)
-    tally_ += t;
+  for (const PairForceResult &r : results_)
+    tally_.add(r);
 }
 
-void InteractionEngine::contribute(std::size_t slot, int atom, long long partner,
-                                   const Eigen::Vector3d &force, const Eigen::Vector3d &torque) {
-  Contribution &c = contributions_[slot];
-  c.atom = atom;
-  c.partner = partner;
+void InteractionEngine::contribute(int atom, long long partner, const Eigen::Vector3d &force,
+                                   const Eigen::Vector3d &torque) {
+  Contribution c{atom, partner, {}, {}};
   for (int d = 0; d < 3; ++d) {
     c.force[d] = force[d];
     c.torque[d] = torque[d];
   }
+  contributions_.push_back(c);
 }
 
-void InteractionEngine::apply(double **f, double **torque, int threads) {
+void InteractionEngine::apply(double **f, double **torque) {
   // The order of a stable sort by (atom, partner): two images of one partner (a periodic box
-  // smaller than a particle's reach) keep their slots' order. A counting sort of the slots by
-  // atom (stable), then each atom's few slots by partner (insertion sort, stable): a comparison
-  // sort of the whole list was 6 % of a settled pile's step. The counting sort moves 4-byte
-  // slot numbers, and the per-atom part, most of the work, runs on the threads.
-  const std::size_t n = contributions_.size();
+  // smaller than a particle's reach) keep the order they were contributed in. A counting sort
+  // by atom (stable), then each atom's few contributions by partner (insertion sort, stable):
+  // a comparison sort of the whole list was 6 % of a settled pile's step.
   int atoms = 0;
   for (const Contribution &c : contributions_)
     atoms = std::max(atoms, c.atom + 1);
   first_of_atom_.assign(static_cast<std::size_t>(atoms) + 1, 0);
-  std::size_t filled = 0;
   for (const Contribution &c : contributions_)
-    if (c.atom >= 0) {
-      ++first_of_atom_[static_cast<std::size_t>(c.atom) + 1];
-      ++filled;
-    }
+    ++first_of_atom_[static_cast<std::size_t>(c.atom) + 1];
   for (int a = 0; a < atoms; ++a)
     first_of_atom_[a + 1] += first_of_atom_[a];
-  sorted_.resize(filled);
+  sorted_.resize(contributions_.size());
   {
     std::vector<std::size_t> &next = next_of_atom_;
     next.assign(first_of_atom_.begin(), first_of_atom_.end() - 1);
-    for (std::size_t k = 0; k < n; ++k)
-      if (contributions_[k].atom >= 0)
-        sorted_[next[contributions_[k].atom]++] = static_cast<std::uint32_t>(k);
+    for (const Contribution &c : contributions_)
+      sorted_[next[c.atom]++] = c;
   }
-  auto sum_atom = [&](int a) {
+  for (int a = 0; a < atoms; ++a) {
     const std::size_t begin = first_of_atom_[a], end = first_of_atom_[a + 1];
-    std::uint32_t *slot = sorted_.data();
     for (std::size_t i = begin + 1; i < end; ++i)
-      for (std::size_t j = i;
-           j > begin && contributions_[slot[j]].partner < contributions_[slot[j - 1]].partner; --j)
-        std::swap(slot[j], slot[j - 1]);
-    for (std::size_t i = begin; i < end; ++i) {
-      const Contribution &c = contributions_[slot[i]];
+      for (std::size_t j = i; j > begin && sorted_[j].partner < sorted_[j - 1].partner; --j)
+        std::swap(sorted_[j], sorted_[j - 1]);
+    for (std::size_t i = begin; i < end; ++i)
       for (int d = 0; d < 3; ++d) {
-        f[a][d] += c.force[d];
-        torque[a][d] += c.torque[d];
+        f[a][d] += sorted_[i].force[d];
+        torque[a][d] += sorted_[i].torque[d];
       }
-    }
-  };
-  if (threads > 1 && filled >= 64) {
-#pragma omp parallel for schedule(static) num_threads(threads)
-    for (int a = 0; a < atoms; ++a)
-      sum_atom(a);
-  } else {
-    for (int a = 0; a < atoms; ++a)
-      sum_atom(a);
   }
 }
 
@@ -143,8 +106,7 @@ std::size_t InteractionEngine::bytes() const {
   std::size_t b = results_.capacity() * sizeof(PairForceResult) +
                   contributions_.capacity() * sizeof(Contribution) +
                   thread_stats_.capacity() * sizeof(ThreadStats) +
-                  sorted_.capacity() * sizeof(std::uint32_t) +
-                  chunk_tallies_.capacity() * sizeof(InteractionTally) +
+                  sorted_.capacity() * sizeof(Contribution) +
                   (first_of_atom_.capacity() + next_of_atom_.capacity()) * sizeof(std::size_t);
   for (const InteractionScratch &s : scratch_)
     b += sizeof(s) + s.bytes();

@@ -60,24 +60,12 @@ public:
   // Statistics of the last run.
   const InteractionTally &tally() const { return tally_; }
 
-  // Ordered summation: open_contributions(slots) sizes the slots, and the host writes every one
-  // of them, from the threads if it likes (a slot is one task's): contribute() the force and
-  // torque that a task's result puts on an atom, or leave_empty(). apply() adds them to f and
-  // torque (rows indexed by atom) in (atom, partner) order, equal keys in slot order, the
-  // per-atom sums on `threads` threads (each atom's sum is one thread's: the same bits on any
-  // count).
-  void open_contributions(std::size_t slots) { contributions_.resize(slots); }
-  void contribute(std::size_t slot, int atom, long long partner, const Eigen::Vector3d &force,
+  // Ordered summation: contribute() the force and torque that task results put on an atom,
+  // then apply() adds them to f and torque (rows indexed by atom) in (atom, partner) order.
+  void clear_contributions() { contributions_.clear(); }
+  void contribute(int atom, long long partner, const Eigen::Vector3d &force,
                   const Eigen::Vector3d &torque);
-  void leave_empty(std::size_t slot) { contributions_[slot].atom = -1; }
-  void apply(double **f, double **torque, int threads = 1);
-
-  // After run(): part_of(k, part) for every task k, on `threads` threads, each taking one
-  // contiguous range of tasks in order into a part of its own; `parts` gets them in range order.
-  // A merge over the parts that keeps the first of equals gives what one pass in task order
-  // would, on any thread count.
-  template <class Part, class PartOf>
-  void in_order(int threads, std::vector<Part> &parts, PartOf &&part_of) const;
+  void apply(double **f, double **torque);
 
   std::size_t bytes() const; // heap memory held
 
@@ -95,8 +83,8 @@ private:
   std::vector<ThreadStats> thread_stats_;
   std::vector<std::vector<long>> deferred_;  // per thread: the group's deferred tasks, by job
   std::vector<PairForceResult> results_;
-  std::vector<Contribution> contributions_; // by slot; atom < 0: empty
-  std::vector<std::uint32_t> sorted_;       // apply(): slots by (atom, partner)
+  std::vector<Contribution> contributions_;
+  std::vector<Contribution> sorted_;                       // apply(): by (atom, partner)
   std::vector<std::size_t> first_of_atom_, next_of_atom_; // apply(): the counting sort
   InteractionTally tally_;
   std::size_t failed_task_ = 0;
@@ -118,14 +106,9 @@ private:
   void split_groups(long groups, int threads);
   long take_group(int range, int thread); // the next group of `range` for `thread`, or -1
 
-  // Tasks per chunk of the tally: its sums (the elastic energy) are taken chunk by chunk, then
-  // over the chunks in order, so they do not depend on the thread count.
-  static constexpr std::size_t kTallyChunk = 256;
-  std::vector<InteractionTally> chunk_tallies_;
-
   void prepare(std::size_t n, int threads);
   void record_failure(std::size_t k, const char *what);
-  void finish(int threads);
+  void finish();
 };
 
 template <class Evaluate> void InteractionEngine::run(std::size_t n, int threads, Evaluate &&evaluate) {
@@ -189,26 +172,7 @@ template <class Evaluate> void InteractionEngine::run(std::size_t n, int threads
           group(g, thread);
     }
   }
-  finish(threads);
-}
-
-template <class Part, class PartOf>
-void InteractionEngine::in_order(int threads, std::vector<Part> &parts, PartOf &&part_of) const {
-  const long n = static_cast<long>(results_.size());
-  if (threads < 1 || n < 64)
-    threads = 1;
-  parts.assign(static_cast<std::size_t>(threads), Part{});
-  auto range = [&](int t) {
-    for (long k = n * t / threads, end = n * (t + 1) / threads; k < end; ++k)
-      part_of(static_cast<std::size_t>(k), parts[static_cast<std::size_t>(t)]);
-  };
-  if (threads == 1) {
-    range(0);
-    return;
-  }
-#pragma omp parallel for schedule(static) num_threads(threads)
-  for (int t = 0; t < threads; ++t)
-    range(t);
+  finish();
 }
 
 } // namespace tri

@@ -32,7 +32,7 @@ struct InteractionTally {
   long long deep_contacts = 0;
   double max_overlap_layers = 0.0;
   double max_depth_of_limit = 0.0;
-  double elastic_energy = 0.0; // J, summed in chunks of tasks in order (the same on any thread count)
+  double elastic_energy = 0.0; // J, summed in task order (so the same on any thread count)
 
   void add(const PairForceResult &r); // one interaction
   InteractionTally &operator+=(const InteractionTally &o);

@@ -86,11 +86,6 @@ void FastestPair::consider(const PairGeometry &g, long i, long j) {
   }
 }
 
-void FastestPair::consider(const FastestPair &other) {
-  if (other.normal_speed > normal_speed)
-    *this = other;
-}
-
 FastestParticle fastest_particle(LAMMPS_NS::LAMMPS *lmp) {
   FastestParticle out;
   const LAMMPS_NS::Atom *atom = lmp->atom;

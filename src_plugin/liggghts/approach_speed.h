@@ -52,7 +52,6 @@ struct FastestPair {
   long tag_i = 0, tag_j = 0;
   // Keeps the pair if it is within reach and approaches strictly faster (ties: the first).
   void consider(const PairGeometry &g, long tag_i, long tag_j);
-  void consider(const FastestPair &other); // the same rule, for merging in task order
 };
 
 struct FastestParticle {

@@ -50,11 +50,6 @@ void DeepestContact::consider(const tri::PairForceResult &r, long a, long b,
   wall = wall_id;
 }
 
-void DeepestContact::consider(const DeepestContact &other) {
-  if (other.depth_of_limit > depth_of_limit)
-    *this = other;
-}
-
 void ContactBoard::publish_material(int slot, const MaterialHint &hint) {
   if (slot < 0 || slot >= static_cast<int>(sources_.size()))
     throw std::out_of_range("ContactBoard::publish_material: no source in slot " +

@@ -47,7 +47,6 @@ struct DeepestContact {
   // Keeps this interaction if it reaches strictly deeper (ties: the first, in task order).
   void consider(const tri::PairForceResult &r, long tag_a, long tag_b,
                 const std::string &wall = std::string());
-  void consider(const DeepestContact &other); // the same rule, for merging in task order
 };
 
 // What a source's material says about the scales of its contacts: the normal stiffness kn

@@ -282,28 +282,18 @@ void FixTriWall::compute(bool update_history) {
                             mesh_ids_[t.mesh] + "': " + engine_.failure();
     error->one(FLERR, msg.c_str()); // every rank that failed stops
   }
-  struct Summary {
-    tri_liggghts::IntersectingPair first;
-    tri_liggghts::DeepestContact deepest;
-  };
-  std::vector<Summary> parts;
-  engine_.open_contributions(ntasks_);
-  engine_.in_order(nthreads, parts, [&](std::size_t k, Summary &part) {
-    const tri::PairForceResult &r = engine_.result(k);
-    const int a = tasks_[k].atom;
-    if (r.intersecting && !part.first.found())
-      part.first = {atom->tag[a], 0};
-    part.deepest.consider(r, atom->tag[a], 0, mesh_ids_[tasks_[k].mesh]);
-    engine_.contribute(k, a, tasks_[k].mesh, r.force_a, r.torque_a);
-  });
-  engine_.apply(atom->f, atom->torque, nthreads);
   tri_liggghts::IntersectingPair first;
   tri_liggghts::DeepestContact deepest;
-  for (const Summary &part : parts) {
-    if (!first.found())
-      first = part.first;
-    deepest.consider(part.deepest);
+  engine_.clear_contributions();
+  for (std::size_t k = 0; k < ntasks_; ++k) {
+    const tri::PairForceResult &r = engine_.result(k);
+    const int a = tasks_[k].atom;
+    if (r.intersecting && !first.found())
+      first = {atom->tag[a], 0};
+    deepest.consider(r, atom->tag[a], 0, mesh_ids_[tasks_[k].mesh]);
+    engine_.contribute(a, tasks_[k].mesh, r.force_a, r.torque_a);
   }
+  engine_.apply(atom->f, atom->torque);
   particles_->board().publish(board_slot_, engine_.tally(), first);
   particles_->board().publish_deepest(board_slot_, deepest);
   seconds_ += MPI_Wtime() - start;

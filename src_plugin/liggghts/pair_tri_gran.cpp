@@ -230,44 +230,28 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
   if (engine_.failed())
     report_failure();
 
-  // What the board needs of the step, and the forces to sum, from each task in one pass on the
-  // threads (engine_.in_order: the same firsts and sums as one pass in task order).
   const tagint *tag = atom->tag;
-  struct Summary {
-    tri_liggghts::IntersectingPair first;
-    tri_liggghts::DeepestContact deepest;
-    tri_liggghts::FastestPair fastest;
-  };
-  std::vector<Summary> parts;
-  engine_.open_contributions(2 * tasks_.size());
-  engine_.in_order(nthreads, parts, [&](std::size_t k, Summary &part) {
-    const Task &t = tasks_[k];
-    const tri::PairForceResult &r = engine_.result(k);
-    part.fastest.consider(task_geometry_[k], tag[t.i], tag[t.j]);
-    if (r.intersecting && !part.first.found())
-      part.first = {std::min(tag[t.i], tag[t.j]), std::max(tag[t.i], tag[t.j])};
-    part.deepest.consider(r, std::min(tag[t.i], tag[t.j]), std::max(tag[t.i], tag[t.j]));
-    // r is the force on the pair's first atom (a) and the torques on both.
-    const int a = t.swapped ? t.j : t.i, b = t.swapped ? t.i : t.j;
-    if (r.contacts_after > 0 && (newton || a < nlocal)) // a is i or j; i is always owned
-      engine_.contribute(2 * k, a, tag[b], r.force_a, r.torque_a);
-    else
-      engine_.leave_empty(2 * k);
-    if (r.contacts_after > 0 && (newton || b < nlocal))
-      engine_.contribute(2 * k + 1, b, tag[a], -r.force_a, r.torque_b);
-    else
-      engine_.leave_empty(2 * k + 1);
-  });
-  engine_.apply(atom->f, atom->torque, nthreads);
   tri_liggghts::IntersectingPair first;
   tri_liggghts::DeepestContact deepest;
   tri_liggghts::FastestPair fastest;
-  for (const Summary &part : parts) {
-    if (!first.found())
-      first = part.first;
-    deepest.consider(part.deepest);
-    fastest.consider(part.fastest);
+  engine_.clear_contributions();
+  for (std::size_t k = 0; k < tasks_.size(); ++k) {
+    const Task &t = tasks_[k];
+    const tri::PairForceResult &r = engine_.result(k);
+    fastest.consider(task_geometry_[k], tag[t.i], tag[t.j]);
+    if (r.intersecting && !first.found())
+      first = {std::min(tag[t.i], tag[t.j]), std::max(tag[t.i], tag[t.j])};
+    deepest.consider(r, std::min(tag[t.i], tag[t.j]), std::max(tag[t.i], tag[t.j]));
+    if (r.contacts_after == 0)
+      continue;
+    // r is the force on the pair's first atom (a) and the torques on both.
+    const int a = t.swapped ? t.j : t.i, b = t.swapped ? t.i : t.j;
+    if (newton || a < nlocal) // a is i or j; i is always owned
+      engine_.contribute(a, tag[b], r.force_a, r.torque_a);
+    if (newton || b < nlocal)
+      engine_.contribute(b, tag[a], -r.force_a, r.torque_b);
   }
+  engine_.apply(atom->f, atom->torque);
   tri_liggghts::ContactBoard &board = particles_->board();
   board.publish(board_slot_, engine_.tally(), first);
   board.publish_deepest(board_slot_, deepest);
