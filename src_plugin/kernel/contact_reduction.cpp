@@ -225,7 +225,8 @@ double smoothstep(double x) {
 // or an edge does not depend on how many triangle pairs see it), dips by at most a fraction of
 // the taper in between, and is C1 in every o_i (a candidate enters with weight and slope 0).
 // Its gradient gives the point, normal and force: c_k = dF/do_k = g du/da_k, plus, shared by
-// the candidates tied with the deepest (tie_band), 1 + taper u g' - g sum_i du/da_i.
+// the candidates tied with the deepest (tie_band) in proportion to w_k,
+// 1 + taper u g' - g sum_i du/da_i.
 // normal_scale = |sum c_k n_k|: the force is kn F normal_scale along `normal`. `weights`
 // receives the c_k, `share` the w_k (same_point: the distance within which tied members are one
 // point).
@@ -240,7 +241,7 @@ SmoothDeepest smooth_deepest(const std::vector<Raw> &raw, const std::vector<int>
   double D = -std::numeric_limits<double>::infinity();
   for (int i : cands)
     D = std::max(D, raw[i].overlap);
-  int num_top = 0, num_active = 0, last_active = 0;
+  int num_active = 0, last_active = 0;
   weights.resize(cands.size()); // a_k for now
   for (std::size_t k = 0; k < cands.size(); ++k) {
     const double a = 1.0 - (D - raw[cands[k]].overlap) / taper;
@@ -249,7 +250,6 @@ SmoothDeepest smooth_deepest(const std::vector<Raw> &raw, const std::vector<int>
       ++num_active;
       last_active = static_cast<int>(k);
     }
-    num_top += raw[cands[k]].overlap >= D - tie_band;
   }
   if (num_active == 1) { // the usual case: one deepest member, F = D, all of its gradient
     const Raw &d = raw[cands[last_active]];
@@ -309,14 +309,20 @@ SmoothDeepest smooth_deepest(const std::vector<Raw> &raw, const std::vector<int>
     slope[k] = du;
     sum_slope += du;
   }
-  const double top_share = (1.0 + taper * u * g_slope - g * sum_slope) / std::max(1, num_top);
+  // The deepest's own part of the gradient, split over the members tied with it by their
+  // shares: each tied point gets an equal part, however many pairs see it.
+  double top_weight = 0.0;
+  for (std::size_t k = 0; k < cands.size(); ++k)
+    if (raw[cands[k]].overlap >= D - tie_band)
+      top_weight += share[k];
+  const double top_part = (1.0 + taper * u * g_slope - g * sum_slope) / top_weight;
   Vector3d sum_p = Vector3d::Zero(), sum_n = Vector3d::Zero();
   double sum_c = 0.0;
   for (std::size_t k = 0; k < cands.size(); ++k) {
     const Raw &d = raw[cands[k]];
     double c_k = g * slope[k];
     if (d.overlap >= D - tie_band)
-      c_k += top_share;
+      c_k += top_part * share[k];
     weights[k] = c_k;
     if (c_k == 0.0)
       continue;

@@ -818,6 +818,21 @@ TEST(ContactReductionPoint, ClosestPointsSeenByManyPairsCountOnce) {
   // Far apart in depth, the deeper point alone.
   EXPECT_LT((reduced_point(3 * taper) - p1).norm(), 1e-9 * spacing);
   EXPECT_LT((reduced_point(-3 * taper) - p2).norm(), 1e-9 * spacing);
+  // Tied exactly, with a third point half a taper shallower on their bisector: the deepest's
+  // own part of the gradient goes to the two tied points equally, not 4 : 2 by their pairs.
+  {
+    const Vector3d p3 = 0.5 * (p1 + p2) + Vector3d(0.0, spacing, 0.0);
+    std::vector<TriangleContact> raw;
+    for (int tb = 0; tb < 4; ++tb)
+      raw.push_back(member(0, tb, p1, depth));
+    for (int tb = 0; tb < 2; ++tb)
+      raw.push_back(member(1, tb, p2, depth));
+    raw.push_back(member(1, 2, p3, depth - 0.5 * taper));
+    const auto points =
+        tri::reduce_contacts(raw, soa_of(a), kEps, soa_of(b), kEps, params_for(1e-3, 1e-3));
+    ASSERT_EQ(points.size(), 1u);
+    EXPECT_LT(std::abs(points[0].point.x() - 0.5 * (p1.x() + p2.x())), 1e-6 * spacing);
+  }
 }
 
 // Tilted beyond kParallelFaceAngle the cube rests on an edge or a vertex: no member has a
