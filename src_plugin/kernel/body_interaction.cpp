@@ -353,6 +353,8 @@ PairForceResult after_kernel(const Body &a, const Body &b, const InteractionSett
   params.min_width = std::min(a.min_edge, b.min_edge);
   params.reference_direction = reference_direction(a, b);
   params.distance_tolerance = certified_tolerance(s.distance, a.epsilon, b.epsilon);
+  params.edge_bulge_a = a.edge_bulge;
+  params.edge_bulge_b = b.edge_bulge;
   reduce_contacts(scratch.triangle_contacts.data(),
                   static_cast<int>(scratch.triangle_contacts.size()), *a.triangles, a.epsilon,
                   *b.triangles, b.epsilon, params, scratch.reduction, scratch.points);

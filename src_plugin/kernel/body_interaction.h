@@ -83,6 +83,9 @@ struct Body {
   // m, the shape's thinnest extent (penetration_depth.h: sets how deep a contact may be);
   // infinity for a wall patch
   double thinnest = std::numeric_limits<double>::infinity();
+  // The smooth surface the shape's mesh samples (smooth_surface.h: 3 lifts per triangle, in
+  // `triangles`' order); null where the facets are the body (a wall patch, a rock, a cube).
+  const double *edge_bulge = nullptr;
   BodyState state;                        // mass <= 0 for a wall
   RigidPose pose; // a particle: x, orientation and bounding radius of `triangles`; unused for a wall
   // A particle: its body-frame triangles (those `pose` places; pose.frame points at them), so

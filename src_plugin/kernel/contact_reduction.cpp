@@ -3,6 +3,7 @@
 
 #include "contact_polygon.h"
 #include "point_links.h"
+#include "smooth_surface.h"
 #include "triangle_distance.h"
 
 #include <algorithm>
@@ -133,6 +134,7 @@ constexpr double kSameFeatureDistance = 1e-4;
 // The two bodies' triangles (never null).
 struct Faces {
   const TriangleSoA *a, *b;
+  const double *bulge_a = nullptr, *bulge_b = nullptr; // smooth_surface.h, 3 per triangle
 };
 
 // Whether triangles ta of a and tb of b are so far from parallel that contact_polygon returns
@@ -390,6 +392,7 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
   // emplace_back from zeroing a 3 KB ContactPolygon per member (value-initialisation).
   std::size_t num_polygons = 0;
   polygon_exact.clear();
+  work.polygon_member.clear();
   plain.clear();
   const Raw &s = raw[seed];
   double deepest_plain = -std::numeric_limits<double>::infinity(); // members without a polygon
@@ -417,6 +420,7 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
     if (member_polygon(r, faces, layer, polygons[num_polygons])) { // filled in place
       ++num_polygons;
       polygon_exact.push_back(!(r.intersecting || r.overlap > layer) ? layer : -1.0);
+      work.polygon_member.push_back(i);
       if (!(r.overlap + exact_slack < D_poly))
         D_poly = std::max(D_poly, exact_overlap(r, faces, layer));
     } else {
@@ -533,23 +537,54 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
   const double r = std::max(0.0, D_poly - mean) / (kFlatPatchBand * D_poly);
   const double beta = flat_blend(r);
 
+  // A body that samples a smooth surface (smooth_surface.h) is measured on it: the polygons'
+  // deepest point with the facets' lifts, which is D_poly where no lift reaches (flat facets,
+  // no smooth edge: nothing changes), and takes over the point and normal once it lies a taper
+  // above the facets' deepest corner.
+  double smooth_gain = 0.0;
+  Vector3d smooth_point = poly_deepest, smooth_normal = poly_deepest_normal;
+  if (faces.bulge_a || faces.bulge_b) {
+    double best = -std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < num_polygons; ++k) {
+      const Raw &r = raw[work.polygon_member[k]];
+      const Vector3d ta[3] = {faces.a->vertex(r.tri_a, 0), faces.a->vertex(r.tri_a, 1),
+                              faces.a->vertex(r.tri_a, 2)};
+      const Vector3d tb[3] = {faces.b->vertex(r.tri_b, 0), faces.b->vertex(r.tri_b, 1),
+                              faces.b->vertex(r.tri_b, 2)};
+      const SmoothPeak peak =
+          smooth_peak(polygons[k], ta, faces.bulge_a ? faces.bulge_a + 3 * r.tri_a : nullptr, tb,
+                      faces.bulge_b ? faces.bulge_b + 3 * r.tri_b : nullptr);
+      if (peak.overlap > best) {
+        best = peak.overlap;
+        smooth_point = peak.point;
+        smooth_normal = peak.normal;
+      }
+    }
+    smooth_gain = std::max(0.0, best - D_poly);
+  }
+  const double smooth_blend = smoothstep(smooth_gain / taper);
   // Members without a polygon (a face's own rim seen edge-on, an edge at a clear angle) take
   // over only where they are deeper than the polygons by more than the taper: within it they
   // are the same closest points seen through the kernel's tolerance (step 5b).
-  const double plain_share = smoothstep((deepest_plain - D_poly - taper) / taper);
-  double D = D_poly;
+  const double D_surface = D_poly + smooth_gain;
+  const double plain_share = smoothstep((deepest_plain - D_surface - taper) / taper);
+  double D = D_surface;
   Vector3d deepest = poly_deepest, deepest_normal;
+  if (smooth_blend > 0.0)
+    deepest += smooth_blend * (smooth_point - poly_deepest);
   {
     Vector3d kernel_point, kernel_normal;
     kernel_deepest(s.overlap, false, kernel_point, kernel_normal);
     // Near flat the polygons orient the deepest point; from the band's end on, the kernel's
     // closest points (the direction of the gradient of a tilted face's overlap).
     deepest_normal = beta * poly_deepest_normal + (1.0 - beta) * kernel_normal;
+    if (smooth_blend > 0.0)
+      deepest_normal += smooth_blend * (smooth_normal - deepest_normal);
     if (plain_share > 0.0) {
       Vector3d plain_point, plain_normal;
       kernel_deepest(deepest_plain, true, plain_point, plain_normal);
-      D += plain_share * (deepest_plain - D_poly);
-      deepest += plain_share * (plain_point - poly_deepest);
+      D += plain_share * (deepest_plain - D_surface);
+      deepest += plain_share * (plain_point - deepest);
       deepest_normal += plain_share * (plain_normal - deepest_normal);
     }
     deepest_normal.normalize();
@@ -561,7 +596,8 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
   const double spread = std::sqrt(std::max(0.0, gradient2 / area - mean_gradient.squaredNorm()));
   // Step 5c: a curved patch (its overlap gradient turns over it) takes the peak of its moments
   // instead of its deepest corner; w is how curved, times the estimate's validity.
-  const double curved_base = curved_weight(spread) * (1.0 - plain_share);
+  const double curved_base =
+      curved_weight(spread) * (1.0 - plain_share) * (1.0 - smooth_blend);
   // Only a patch that spans many facets is a smooth surface seen through its facets: one or
   // two facets (a vertex, an edge, a rock's corner) are the surface itself, and their deepest
   // corner is its peak. Facets spanned by the polygons of step 5b: n = M1 / (D f), f their
@@ -928,7 +964,8 @@ void reduce_contacts(const TriangleContact *contacts, int n, const TriangleSoA &
                      double eps_a, const TriangleSoA &tris_b, double eps_b,
                      const ReductionParams &params, ReductionWorkspace &work,
                      std::vector<ContactPoint> &out) {
-  reduce(contacts, n, Faces{&tris_a, &tris_b}, eps_a, eps_b, params, work, out);
+  reduce(contacts, n, Faces{&tris_a, &tris_b, params.edge_bulge_a, params.edge_bulge_b}, eps_a,
+         eps_b, params, work, out);
 }
 
 std::vector<ContactPoint> reduce_contacts(const std::vector<TriangleContact> &contacts,

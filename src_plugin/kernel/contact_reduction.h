@@ -331,6 +331,9 @@ struct ReductionParams {
   // them) is not recomputed; one certified apart (TriangleContact::apart) is recomputed
   // without the intersection test (separated_triangle_distance, triangle_distance.h).
   double distance_tolerance = std::numeric_limits<double>::infinity();
+  // The bodies' smooth surfaces (smooth_surface.h: edge_bulges, 3 per triangle, indexed as
+  // tris_a / tris_b); null for facets that are the body (a wall, a rock, a cube). Step 5b.
+  const double *edge_bulge_a = nullptr, *edge_bulge_b = nullptr;
 };
 
 // The link length that keeps every contact patch connected: 2 * min(longest edge of a,
@@ -362,6 +365,7 @@ struct ReductionWorkspace {
   double cos_split = 1.0;                                         // its cosine, kept
   std::vector<ContactPolygon> polygons; // one class's contact polygons
   std::vector<double> polygon_layers;   // per polygon: the layer, or -1 (intersecting, sunk)
+  std::vector<int> polygon_member;      // per polygon: its member (index into raw)
   std::vector<int> plain; // one class's members without a polygon (steps 5 and 5c)
   std::vector<double> smooth_scratch; // step 5: the smooth maximum's weights
   std::vector<double> smooth_share;   // step 5: each member's share of its closest point

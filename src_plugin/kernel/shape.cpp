@@ -2,6 +2,7 @@
 
 #include "mesh_validation.h"
 #include "penetration_depth.h"
+#include "smooth_surface.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -159,6 +160,7 @@ Shape make_shape(std::string name, TriangleMesh mesh) {
   shape.mean_edge_length = sum / (3.0 * shape.mesh.num_triangles());
 
   shape.convex = is_convex(shape.mesh, kConvexityTolerance * 2.0 * shape.bounding_radius);
+  shape.edge_bulge = edge_bulges(shape.mesh);
   return shape;
 }
 

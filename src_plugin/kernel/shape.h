@@ -22,6 +22,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <string>
+#include <vector>
 
 namespace tri {
 
@@ -45,6 +46,9 @@ struct Shape {
   // The smallest extent of the vertices along the principal axes, m (penetration_depth.h).
   double thinnest_extent = 0.0;
   bool convex = false;          // every vertex on or behind every face plane (kConvexityTolerance)
+  // The smooth surface the mesh samples, where it is one (smooth_surface.h): 3 lifts per
+  // triangle (m, rotation invariant); empty for a body that is its facets.
+  std::vector<double> edge_bulge;
   // The principal axes as columns, in the input frame: the rotation from the body (principal)
   // frame to the input frame (orthonormal, determinant +1; MassProperties::principal_axes).
   Eigen::Matrix3d principal_axes = Eigen::Matrix3d::Identity();
