@@ -86,6 +86,9 @@ struct Body {
   // The smooth surface the shape's mesh samples (smooth_surface.h: 3 lifts per triangle, in
   // `triangles`' order); null where the facets are the body (a wall patch, a rock, a cube).
   const double *edge_bulge = nullptr;
+  // m, how far that surface rises above the facets at most (Shape::surface_lift): the triangle
+  // search reaches epsilon + lift, the layer stays epsilon (contact_reduction.h, step 5b).
+  double lift = 0.0;
   BodyState state;                        // mass <= 0 for a wall
   RigidPose pose; // a particle: x, orientation and bounding radius of `triangles`; unused for a wall
   // A particle: its body-frame triangles (those `pose` places; pose.frame points at them), so
@@ -94,6 +97,11 @@ struct Body {
   const TriangleSoA *frame = nullptr;
 
   bool is_wall() const { return !(state.mass > 0.0); }
+  // The triangle search's reach against `other`, m: the lift counts against walls only
+  // (body_interaction.cpp after_kernel: particle pairs keep their facets).
+  double reach_epsilon(const Body &other) const {
+    return other.is_wall() ? epsilon + lift : epsilon;
+  }
 };
 
 // The separating axis the host keeps for one body pair between steps (separating_axis.h):

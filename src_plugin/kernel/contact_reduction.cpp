@@ -135,6 +135,7 @@ constexpr double kSameFeatureDistance = 1e-4;
 struct Faces {
   const TriangleSoA *a, *b;
   const double *bulge_a = nullptr, *bulge_b = nullptr; // smooth_surface.h, 3 per triangle
+  double lift = 0.0; // m, ReductionParams::surface_lift
 };
 
 // Whether triangles ta of a and tb of b are so far from parallel that contact_polygon returns
@@ -380,6 +381,44 @@ double face_weight_of(double spread, double tilt) {
          (1.0 - smoothstep((tilt - tilt_full) / (tilt_end - tilt_full)));
 }
 
+// The deepest point of the smooth surfaces that two bodies' facets sample (smooth_surface.h)
+// over one class's members: each nearly parallel member's polygon, clipped where the lifts may
+// still reach (the layer widened by faces.lift), with the lifts of its two facets.
+struct SmoothFound {
+  bool found = false;
+  double overlap = 0.0;
+  Vector3d point = Vector3d::Zero(), normal = Vector3d::UnitZ();
+};
+SmoothFound smooth_surface_peak(const std::vector<Raw> &raw, const std::vector<int> &members,
+                                const std::vector<int> &cls, const std::vector<int> &absorbed,
+                                int c, double layer, const Faces &faces) {
+  SmoothFound best;
+  ContactPolygon poly;
+  const TriangleSoA &ta = *faces.a, &tb = *faces.b;
+  for (int i : members) {
+    if (cls[i] != c || absorbed[i])
+      continue;
+    const Raw &r = raw[i];
+    if (clearly_not_parallel(ta, r.tri_a, tb, r.tri_b))
+      continue;
+    const Vector3d a[3] = {ta.vertex(r.tri_a, 0), ta.vertex(r.tri_a, 1), ta.vertex(r.tri_a, 2)};
+    const Vector3d b[3] = {tb.vertex(r.tri_b, 0), tb.vertex(r.tri_b, 1), tb.vertex(r.tri_b, 2)};
+    if (!contact_polygon(a[0], a[1], a[2], b[0], b[1], b[2], r.normal, layer + faces.lift, poly) ||
+        !(poly.area > kPatchAreaRounding * poly.min_triangle_area))
+      continue;
+    const SmoothPeak peak =
+        smooth_peak(poly, a, faces.bulge_a ? faces.bulge_a + 3 * r.tri_a : nullptr, b,
+                    faces.bulge_b ? faces.bulge_b + 3 * r.tri_b : nullptr, faces.lift);
+    if (!best.found || peak.overlap > best.overlap) {
+      best.found = true;
+      best.overlap = peak.overlap;
+      best.point = peak.point;
+      best.normal = peak.normal;
+    }
+  }
+  return best;
+}
+
 ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &members,
                         const std::vector<int> &cls, const std::vector<int> &absorbed, int c,
                         int seed, double layer, const Vector3d &ref, const Faces &faces,
@@ -392,7 +431,6 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
   // emplace_back from zeroing a 3 KB ContactPolygon per member (value-initialisation).
   std::size_t num_polygons = 0;
   polygon_exact.clear();
-  work.polygon_member.clear();
   plain.clear();
   const Raw &s = raw[seed];
   double deepest_plain = -std::numeric_limits<double>::infinity(); // members without a polygon
@@ -420,15 +458,14 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
     if (member_polygon(r, faces, layer, polygons[num_polygons])) { // filled in place
       ++num_polygons;
       polygon_exact.push_back(!(r.intersecting || r.overlap > layer) ? layer : -1.0);
-      work.polygon_member.push_back(i);
       if (!(r.overlap + exact_slack < D_poly))
         D_poly = std::max(D_poly, exact_overlap(r, faces, layer));
     } else {
       deepest_plain = std::max(deepest_plain, r.overlap);
-      plain_overlap += r.overlap;
+      plain_overlap += std::max(0.0, r.overlap); // (< 0: facets only within the lifts' reach)
       plain.push_back(i);
     }
-    member_overlap += r.overlap;
+    member_overlap += std::max(0.0, r.overlap);
   }
   p.tri_a = s.tri_a;
   p.tri_b = s.tri_b;
@@ -462,6 +499,11 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
       normal = finite(s.normal) ? s.normal : ref;
   };
 
+  // The deepest point of the smooth surfaces (smooth_surface.h): over every nearly parallel
+  // member, its polygon clipped where the lifts may still reach (o >= -lift).
+  SmoothFound smooth;
+  if (faces.bulge_a || faces.bulge_b)
+    smooth = smooth_surface_peak(raw, members, cls, absorbed, c, layer, faces);
   const Vector3d fallback_normal = finite(s.normal) ? s.normal : ref;
   if (num_polygons == 0) {
     const SmoothDeepest sd =
@@ -471,6 +513,16 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
     p.normal = sd.normal;
     p.overlap = sd.overlap * sd.normal_scale;
     p.energy_overlap = sd.overlap;
+    if (smooth.found && smooth.overlap > sd.overlap) {
+      // No facet overlaps yet (or only at a clear angle): the smooth surfaces decide where they
+      // reach past the facets, fully from a taper on.
+      const double gain = smooth.overlap - sd.overlap;
+      const double t = smoothstep(gain / taper);
+      p.point += t * (smooth.point - p.point);
+      p.normal = (p.normal + t * (smooth.normal - p.normal)).normalized();
+      p.energy_overlap = smooth.overlap;
+      p.overlap = smooth.overlap * ((1.0 - t) * sd.normal_scale + t);
+    }
     return p;
   }
 
@@ -541,27 +593,9 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
   // deepest point with the facets' lifts, which is D_poly where no lift reaches (flat facets,
   // no smooth edge: nothing changes), and takes over the point and normal once it lies a taper
   // above the facets' deepest corner.
-  double smooth_gain = 0.0;
-  Vector3d smooth_point = poly_deepest, smooth_normal = poly_deepest_normal;
-  if (faces.bulge_a || faces.bulge_b) {
-    double best = -std::numeric_limits<double>::infinity();
-    for (std::size_t k = 0; k < num_polygons; ++k) {
-      const Raw &r = raw[work.polygon_member[k]];
-      const Vector3d ta[3] = {faces.a->vertex(r.tri_a, 0), faces.a->vertex(r.tri_a, 1),
-                              faces.a->vertex(r.tri_a, 2)};
-      const Vector3d tb[3] = {faces.b->vertex(r.tri_b, 0), faces.b->vertex(r.tri_b, 1),
-                              faces.b->vertex(r.tri_b, 2)};
-      const SmoothPeak peak =
-          smooth_peak(polygons[k], ta, faces.bulge_a ? faces.bulge_a + 3 * r.tri_a : nullptr, tb,
-                      faces.bulge_b ? faces.bulge_b + 3 * r.tri_b : nullptr);
-      if (peak.overlap > best) {
-        best = peak.overlap;
-        smooth_point = peak.point;
-        smooth_normal = peak.normal;
-      }
-    }
-    smooth_gain = std::max(0.0, best - D_poly);
-  }
+  const double smooth_gain = smooth.found ? std::max(0.0, smooth.overlap - D_poly) : 0.0;
+  const Vector3d smooth_point = smooth.found ? smooth.point : poly_deepest;
+  const Vector3d smooth_normal = smooth.found ? smooth.normal : poly_deepest_normal;
   const double smooth_blend = smoothstep(smooth_gain / taper);
   // Members without a polygon (a face's own rim seen edge-on, an edge at a clear angle) take
   // over only where they are deeper than the polygons by more than the taper: within it they
@@ -834,8 +868,12 @@ void reduce_clusters(std::vector<Raw> &raw, double layer, const ReductionParams 
     }
     for (int c = first_class; c < static_cast<int>(seeds.size()); ++c)
       if (alive[c]) {
-        out.push_back(make_point(raw, group, cls, absorbed, c, seeds[c], layer, ref, faces,
-                                 params.distance_tolerance, work));
+        const ContactPoint p = make_point(raw, group, cls, absorbed, c, seeds[c], layer, ref,
+                                          faces, params.distance_tolerance, work);
+        // Facets within reach of the lifts whose smooth surfaces do not overlap yet.
+        if (params.surface_lift > 0.0 && !(p.overlap > 0.0))
+          continue;
+        out.push_back(p);
       }
     begin = end;
   }
@@ -890,7 +928,7 @@ void reduce(const TriangleContact *contacts, int n, const Faces &faces, double e
                               std::to_string(c.tri_b) + " of meshes with " + std::to_string(na) +
                               ", " + std::to_string(nb));
     const double overlap = contact_overlap(c, layer);
-    if (!(overlap > 0.0))
+    if (!(overlap > -params.surface_lift)) // 0 but where smooth surfaces reach past the facets
       continue;
     if (!finite(contact_point(c)))
       continue; // nothing sensible to place; the kernel never produces this
@@ -964,7 +1002,8 @@ void reduce_contacts(const TriangleContact *contacts, int n, const TriangleSoA &
                      double eps_a, const TriangleSoA &tris_b, double eps_b,
                      const ReductionParams &params, ReductionWorkspace &work,
                      std::vector<ContactPoint> &out) {
-  reduce(contacts, n, Faces{&tris_a, &tris_b, params.edge_bulge_a, params.edge_bulge_b}, eps_a,
+  reduce(contacts, n, Faces{&tris_a, &tris_b, params.edge_bulge_a, params.edge_bulge_b,
+                                 params.surface_lift}, eps_a,
          eps_b, params, work, out);
 }
 

@@ -334,6 +334,10 @@ struct ReductionParams {
   // The bodies' smooth surfaces (smooth_surface.h: edge_bulges, 3 per triangle, indexed as
   // tris_a / tris_b); null for facets that are the body (a wall, a rock, a cube). Step 5b.
   const double *edge_bulge_a = nullptr, *edge_bulge_b = nullptr;
+  // m, a.lift + b.lift (body_interaction.h): contacts whose facets are up to that much beyond
+  // the layer still count where edge lifts are given (their smooth surfaces may overlap); a
+  // contact point whose overlap comes out <= 0 is dropped.
+  double surface_lift = 0.0;
 };
 
 // The link length that keeps every contact patch connected: 2 * min(longest edge of a,
@@ -365,7 +369,6 @@ struct ReductionWorkspace {
   double cos_split = 1.0;                                         // its cosine, kept
   std::vector<ContactPolygon> polygons; // one class's contact polygons
   std::vector<double> polygon_layers;   // per polygon: the layer, or -1 (intersecting, sunk)
-  std::vector<int> polygon_member;      // per polygon: its member (index into raw)
   std::vector<int> plain; // one class's members without a polygon (steps 5 and 5c)
   std::vector<double> smooth_scratch; // step 5: the smooth maximum's weights
   std::vector<double> smooth_share;   // step 5: each member's share of its closest point

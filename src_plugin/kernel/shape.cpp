@@ -161,6 +161,7 @@ Shape make_shape(std::string name, TriangleMesh mesh) {
 
   shape.convex = is_convex(shape.mesh, kConvexityTolerance * 2.0 * shape.bounding_radius);
   shape.edge_bulge = edge_bulges(shape.mesh);
+  shape.surface_lift = max_lift(shape.edge_bulge);
   return shape;
 }
 

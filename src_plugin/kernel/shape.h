@@ -49,6 +49,7 @@ struct Shape {
   // The smooth surface the mesh samples, where it is one (smooth_surface.h): 3 lifts per
   // triangle (m, rotation invariant); empty for a body that is its facets.
   std::vector<double> edge_bulge;
+  double surface_lift = 0.0; // m, the largest lift (smooth_surface.h max_lift); 0 without
   // The principal axes as columns, in the input frame: the rotation from the body (principal)
   // frame to the input frame (orthonormal, determinant +1; MassProperties::principal_axes).
   Eigen::Matrix3d principal_axes = Eigen::Matrix3d::Identity();

@@ -1,6 +1,7 @@
 #include "smooth_surface.h"
 
 #include <algorithm>
+#include <Eigen/LU>
 #include <Eigen/QR>
 #include <cmath>
 #include <limits>
@@ -133,8 +134,33 @@ std::vector<double> edge_bulges(const TriangleMesh &mesh) {
   return bulge;
 }
 
+double max_lift(const std::vector<double> &bulges) {
+  double most = 0.0;
+  for (std::size_t t = 0; 3 * t + 2 < bulges.size(); ++t) {
+    const double *k = &bulges[3 * t];
+    // On an edge (i, j) the lift is b_i b_j k_ij, at most k_ij / 4; inside, the stationary
+    // point of b^T K b on b_0 + b_1 + b_2 = 1 (2 K b = lambda 1), where it lies inside.
+    for (int e = 0; e < 3; ++e)
+      most = std::max(most, 0.25 * k[e]);
+    Eigen::Matrix4d system = Eigen::Matrix4d::Zero();
+    system(0, 1) = system(1, 0) = k[0];
+    system(1, 2) = system(2, 1) = k[1];
+    system(2, 0) = system(0, 2) = k[2];
+    for (int i = 0; i < 3; ++i)
+      system(i, 3) = system(3, i) = 1.0;
+    const Eigen::Vector4d rhs(0.0, 0.0, 0.0, 1.0);
+    const Eigen::Vector4d sol = system.fullPivLu().solve(rhs);
+    if (sol.head<3>().allFinite() && (sol.head<3>().array() >= 0.0).all() &&
+        std::abs(sol.head<3>().sum() - 1.0) < 1e-9) {
+      const double b0 = sol(0), b1 = sol(1), b2 = sol(2);
+      most = std::max(most, b0 * b1 * k[0] + b1 * b2 * k[1] + b2 * b0 * k[2]);
+    }
+  }
+  return most;
+}
+
 SmoothPeak smooth_peak(const ContactPolygon &patch, const Vector3d a[3], const double *bulge_a,
-                       const Vector3d b[3], const double *bulge_b) {
+                       const Vector3d b[3], const double *bulge_b, double shift) {
   SmoothPeak peak;
   const int n = patch.num_vertices;
   const Vector3d m = patch.direction;
@@ -145,7 +171,7 @@ SmoothPeak smooth_peak(const ContactPolygon &patch, const Vector3d a[3], const d
     return Vector2d(d.dot(e1), d.dot(e2));
   };
   // The polygon's overlap, affine: o(u) = o_0 + grad . u.
-  const double o0 = n > 0 ? patch.corner_overlaps[0] : 0.0;
+  const double o0 = n > 0 ? patch.corner_overlaps[0] - shift : 0.0;
   const Vector2d grad(patch.overlap_gradient.dot(e1), patch.overlap_gradient.dot(e2));
   auto lift_of = [&](const Vector3d t[3], const double *k) {
     Lift lift;

@@ -46,13 +46,20 @@ constexpr double kSmoothVertexAngle = 0.15; // rad: facets within it of a vertex
 // edge's is 0 (no smooth surface: the facets are the body). Precondition: a valid closed mesh.
 std::vector<double> edge_bulges(const TriangleMesh &mesh);
 
+// The largest lift of any facet (m, >= 0): how far the smooth surface rises above the facets.
+// The contact search reaches that much further for such a body (body_interaction.h: Body::lift),
+// so that a contact starts when the smooth surface, not the first vertex, meets the layer.
+double max_lift(const std::vector<double> &bulges);
+
 // The deepest point of a contact polygon (contact_polygon.h) measured on the two bodies' smooth
 // surfaces: the largest o + h_a + h_b over the polygon, o the polygon's affine overlap and h the
 // lift of triangle a (corners a0..a2, lifts bulge_a[0..2] as edge_bulges stores them; null for
 // a flat facet) and of triangle b, each measured along its facet's normal (a lift h of either
 // surface towards the other raises the polygon's overlap, a distance, by h). Taken on the
 // polygon's plane: the interior maximum of the quadratic where it lies inside the polygon, else
-// the best over the corners and edges.
+// the best over the corners and edges. `shift` (m) is subtracted from the polygon's overlap:
+// a polygon clipped with a layer widened by the lifts (o >= -shift) to reach the whole region
+// where the smooth surfaces overlap.
 struct SmoothPeak {
   double overlap = 0.0;                          // m
   Eigen::Vector3d point = Eigen::Vector3d::Zero(); // m, world, on the polygon's mid-surface
@@ -61,6 +68,7 @@ struct SmoothPeak {
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
 };
 SmoothPeak smooth_peak(const ContactPolygon &patch, const Eigen::Vector3d a[3],
-                       const double *bulge_a, const Eigen::Vector3d b[3], const double *bulge_b);
+                       const double *bulge_a, const Eigen::Vector3d b[3], const double *bulge_b,
+                       double shift = 0.0);
 
 } // namespace tri
