@@ -29,6 +29,7 @@ REPO = os.path.abspath(os.path.join(HERE, "..", "..", ".."))
 sys.path.insert(0, os.path.join(REPO, "validation", "meshes"))
 sys.path.insert(0, os.path.join(REPO, "validation"))
 import meshgen  # noqa: E402
+from ideal_ball import DT, GAP, STEPS, ideal_ball  # noqa: E402
 import valtools  # noqa: E402
 
 R, RHO, EPS = 0.002, 2500.0, 5e-6        # m, kg/m^3, m (soft layer; the wall's is the same)
@@ -37,7 +38,6 @@ LEVELS = (3, 4, 5)
 RATIOS = (0.1, 0.3, 1.0, 3.0)            # vt / vn
 SERIES = (("2/7", 2.0 / 7.0), ("1", 1.0))  # kt / kn
 SEEDS = (11, 22, 33, 44)                 # orient random SEED: four orientations
-DT, STEPS, GAP = 1e-6, 400, 1e-6         # s, -, m (gap outside the layers at t = 0)
 TOL = 0.01
 QUIET = 20                               # the last QUIET rows must be out of contact
 
@@ -59,40 +59,6 @@ def facets(level):
     edges = np.concatenate([np.linalg.norm(b - a, axis=1), np.linalg.norm(c - b, axis=1),
                             np.linalg.norm(a - c, axis=1)])
     return R - d.min(), edges.mean()
-
-
-def ideal_ball(m, inertia, r, kn, kt, mu, vn, vt, dt=DT, steps=STEPS, gap=GAP):
-    """A ball of mass m, moment of inertia `inertia`, radius r (lever r - overlap / 2, as
-    LIGGGHTS's wall contact, surface_model_default.h) on the plane z = 0: LIGGGHTS's
-    hooke/stiffness normal force kn overlap (gamman 0), tangential_model_history.h (shear += v_t
-    dt, Ft = -kt shear, capped at mu Fn by rescaling the shear), nve/sphere's velocity Verlet,
-    starting at z = r + gap. Returns (vx, vz, omega_y) after `steps` steps."""
-    z, vx, vz, wy = r + gap, vt, -vn, 0.0
-    fx = fz = ty = 0.0
-    shear = 0.0
-    h = 0.5 * dt
-    for _ in range(steps):
-        vx += h * fx / m
-        vz += h * fz / m
-        wy += h * ty / inertia
-        z += dt * vz
-        delta = r - z
-        if delta > 0:
-            fn = kn * delta
-            lever = r - 0.5 * delta
-            shear += (vx - lever * wy) * dt
-            ft = -kt * shear
-            if abs(ft) > mu * fn:
-                ft *= mu * fn / abs(ft)
-                shear = -ft / kt
-            fx, fz, ty = ft, fn, -lever * ft
-        else:
-            fx = fz = ty = 0.0
-            shear = 0.0
-        vx += h * fx / m
-        vz += h * fz / m
-        wy += h * ty / inertia
-    return vx, vz, wy
 
 
 def after(path, contact_col):
