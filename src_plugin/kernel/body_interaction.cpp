@@ -273,14 +273,14 @@ PairForceResult body_interaction(const Body &a, const Body &b, const Interaction
     if (cache.update)
       cache.candidates->note_use();
     if (scratch.defer && can_queue_candidates(s.distance)) {
-      scratch.jobs.push_back(queue_candidates(*a.triangles, a.reach_epsilon(b), *b.triangles, b.reach_epsilon(a),
-                                              s.distance, cache.candidates->pairs(),
-                                              cache.candidates->count(), stats));
+      scratch.jobs.push_back(queue_candidates(
+          *a.triangles, a.reach_epsilon(b), *b.triangles, b.reach_epsilon(a), s.distance,
+          cache.candidates->pairs(), cache.candidates->count(), stats));
       scratch.job_origins.push_back({});
       return PairForceResult{};
     }
-    contacts_among_candidates(*a.triangles, a.reach_epsilon(b), *b.triangles, b.reach_epsilon(a), s.distance,
-                              cache.candidates->pairs(), cache.candidates->count(),
+    contacts_among_candidates(*a.triangles, a.reach_epsilon(b), *b.triangles, b.reach_epsilon(a),
+                              s.distance, cache.candidates->pairs(), cache.candidates->count(),
                               scratch.triangle_contacts, stats, scratch.distance);
   } else {
     const bool keep = coherent && cache.update && cache.candidates->worth_keeping();
@@ -303,13 +303,14 @@ PairForceResult body_interaction(const Body &a, const Body &b, const Interaction
       scratch.job_origins.push_back(
           {static_cast<std::ptrdiff_t>(scratch.job_pairs.size()), keep, reach});
       scratch.job_pairs.insert(scratch.job_pairs.end(), found, found + count);
-      scratch.jobs.push_back(queue_candidates(*a.triangles, a.reach_epsilon(b), *b.triangles, b.reach_epsilon(a),
-                                              s.distance, nullptr, count, stats));
+      scratch.jobs.push_back(queue_candidates(*a.triangles, a.reach_epsilon(b), *b.triangles,
+                                              b.reach_epsilon(a), s.distance, nullptr, count,
+                                              stats));
       return PairForceResult{};
     }
-    contacts_among_candidates(*a.triangles, a.reach_epsilon(b), *b.triangles, b.reach_epsilon(a), s.distance,
-                              scratch.distance.pairs.data(), count, scratch.triangle_contacts,
-                              stats, scratch.distance);
+    contacts_among_candidates(*a.triangles, a.reach_epsilon(b), *b.triangles, b.reach_epsilon(a),
+                              s.distance, scratch.distance.pairs.data(), count,
+                              scratch.triangle_contacts, stats, scratch.distance);
     if (keep)
       cache.candidates->keep(pose_a, *a.triangles, pose_b, *b.triangles, cutoff, reach,
                              scratch.distance.pairs.data(), count, scratch.distance.results.data());

@@ -214,7 +214,7 @@ SmoothPeak smooth_peak(const ContactPolygon &patch, const Vector3d a[3], const d
       best_u = u;
     }
   };
-  std::vector<Vector2d>::size_type count = static_cast<std::size_t>(n);
+  const std::size_t count = static_cast<std::size_t>(n);
   Vector2d corners[kPolygonMaxVertices];
   double twice_area = 0.0;
   for (std::size_t k = 0; k < count; ++k)
