@@ -138,26 +138,36 @@ struct Faces {
   double lift = 0.0; // m, ReductionParams::surface_lift
 };
 
+// Triangle t's plane normal (unscaled) and its squared length, from the call's cache.
+const ReductionWorkspace::TriangleNormal &
+triangle_normal(const TriangleSoA &soa, int t, std::vector<ReductionWorkspace::TriangleNormal> &cache,
+                unsigned call) {
+  ReductionWorkspace::TriangleNormal &e = cache[static_cast<std::size_t>(t)];
+  if (e.stamp != call) {
+    const Vector3d v0 = soa.vertex(t, 0);
+    e.normal = (soa.vertex(t, 1) - v0).cross(soa.vertex(t, 2) - v0);
+    e.norm2 = e.normal.squaredNorm();
+    e.stamp = call;
+  }
+  return e;
+}
+
 // Whether triangles ta of a and tb of b are so far from parallel that contact_polygon returns
 // false for them (most members are): the cosine of their angle below cos(kParallelFaceAngle) by
-// a margin far above rounding, without contact_polygon's roots and divisions. Out of line, so
-// that the arithmetic of the reduction around it compiles as it did, bit for bit. Overflow or
+// a margin far above rounding, without contact_polygon's roots and divisions. Overflow or
 // underflow leaves it false.
-[[gnu::noinline]] bool clearly_not_parallel(const TriangleSoA &a, int ta, const TriangleSoA &b,
-                                            int tb) {
+bool clearly_not_parallel(const ReductionWorkspace::TriangleNormal &na,
+                          const ReductionWorkspace::TriangleNormal &nb) {
   static const double limit = std::cos(kParallelFaceAngle);
-  const Vector3d a0 = a.vertex(ta, 0), b0 = b.vertex(tb, 0);
-  const Vector3d na = (a.vertex(ta, 1) - a0).cross(a.vertex(ta, 2) - a0);
-  const Vector3d nb = (b.vertex(tb, 1) - b0).cross(b.vertex(tb, 2) - b0);
-  const double c = na.dot(nb);
-  return c * c < 0.99 * (limit * limit) * (na.squaredNorm() * nb.squaredNorm());
+  const double c = na.normal.dot(nb.normal);
+  return c * c < 0.99 * (limit * limit) * (na.norm2 * nb.norm2);
 }
 
 // The member's contact polygon (header, step 5) if its triangles are nearly parallel and their
 // overlap has an area beyond rounding; false otherwise.
 bool member_polygon(const Raw &r, const Faces &faces, double layer, ContactPolygon &poly) {
   const TriangleSoA &ta = *faces.a, &tb = *faces.b;
-  if (clearly_not_parallel(ta, r.tri_a, tb, r.tri_b))
+  if (!r.maybe_parallel)
     return false; // as contact_polygon would
   if (!contact_polygon(ta.vertex(r.tri_a, 0), ta.vertex(r.tri_a, 1), ta.vertex(r.tri_a, 2),
                        tb.vertex(r.tri_b, 0), tb.vertex(r.tri_b, 1), tb.vertex(r.tri_b, 2),
@@ -273,6 +283,11 @@ SmoothDeepest smooth_deepest(const std::vector<Raw> &raw, const std::vector<int>
   // merge or split then moves F by at most half of it.
   double s2 = 0.0, s3 = 0.0, s4 = 0.0;
   share.assign(cands.size(), 0.0);
+  // Deepest first (the reduction's order, mostly): ties with a member are then a window
+  // around it, since |o_j - o_k| only grows (rounding included) with the distance in order.
+  bool sorted = true;
+  for (std::size_t k = 1; k < cands.size(); ++k)
+    sorted = sorted && raw[cands[k - 1]].overlap >= raw[cands[k]].overlap;
   const double same2 = same_point * same_point;
   for (std::size_t k = 0; k < cands.size(); ++k) {
     const double a = weights[k];
@@ -280,10 +295,20 @@ SmoothDeepest smooth_deepest(const std::vector<Raw> &raw, const std::vector<int>
       continue;
     const Raw &rk = raw[cands[k]];
     int count = 0;
-    for (std::size_t j = 0; j < cands.size(); ++j) {
-      const Raw &rj = raw[cands[j]];
-      count += weights[j] > 0.0 && std::abs(rj.overlap - rk.overlap) <= tie_band &&
-               (rj.point - rk.point).squaredNorm() <= same2;
+    if (sorted) { // the members tied with k's overlap are the ones next to it
+      std::size_t lo = k, hi = k + 1;
+      while (lo > 0 && std::abs(raw[cands[lo - 1]].overlap - rk.overlap) <= tie_band)
+        --lo;
+      while (hi < cands.size() && std::abs(raw[cands[hi]].overlap - rk.overlap) <= tie_band)
+        ++hi;
+      for (std::size_t j = lo; j < hi; ++j)
+        count += weights[j] > 0.0 && (raw[cands[j]].point - rk.point).squaredNorm() <= same2;
+    } else {
+      for (std::size_t j = 0; j < cands.size(); ++j) {
+        const Raw &rj = raw[cands[j]];
+        count += weights[j] > 0.0 && std::abs(rj.overlap - rk.overlap) <= tie_band &&
+                 (rj.point - rk.point).squaredNorm() <= same2;
+      }
     }
     const double w = 1.0 / std::max(1, count);
     share[k] = w;
@@ -399,7 +424,7 @@ SmoothFound smooth_surface_peak(const std::vector<Raw> &raw, const std::vector<i
     if (cls[i] != c || absorbed[i])
       continue;
     const Raw &r = raw[i];
-    if (clearly_not_parallel(ta, r.tri_a, tb, r.tri_b))
+    if (!r.maybe_parallel)
       continue;
     const Vector3d a[3] = {ta.vertex(r.tri_a, 0), ta.vertex(r.tri_a, 1), ta.vertex(r.tri_a, 2)};
     const Vector3d b[3] = {tb.vertex(r.tri_b, 0), tb.vertex(r.tri_b, 1), tb.vertex(r.tri_b, 2)};
@@ -780,23 +805,36 @@ void reduce_clusters(std::vector<Raw> &raw, double layer, const ReductionParams 
                      const Vector3d &ref, const Faces &faces, ReductionWorkspace &work,
                      std::vector<ContactPoint> &out) {
   const int n = static_cast<int>(raw.size());
-  work.points.resize(n);
-  for (int i = 0; i < n; ++i)
-    work.points[i] = raw[i].point;
-  link_points(work.points, params.link_length, work.parent, work.links);
   // Members of each component, components in the order of their deepest member.
   std::vector<int> &label = work.label;
   label.resize(n);
-  for (int i = 0; i < n; ++i)
-    label[i] = link_root(work.parent, i);
+  // Points whose bounding box has a diagonal within the link length are all linked (every
+  // pair's distance is at most the diagonal, and rounding keeps that order: a contact at one
+  // place, most of them): one component, labels 0, as link_points would find.
+  Vector3d lo = raw[0].point, hi = raw[0].point;
+  for (int i = 1; i < n; ++i) {
+    lo = lo.cwiseMin(raw[i].point);
+    hi = hi.cwiseMax(raw[i].point);
+  }
+  bool one_component = (hi - lo).squaredNorm() <= params.link_length * params.link_length;
+  if (one_component) {
+    std::fill(label.begin(), label.end(), 0);
+  } else {
+    work.points.resize(n);
+    for (int i = 0; i < n; ++i)
+      work.points[i] = raw[i].point;
+    link_points(work.points, params.link_length, work.parent, work.links);
+    for (int i = 0; i < n; ++i)
+      label[i] = link_root(work.parent, i);
+    one_component = true;
+    for (int i = 0; i < n; ++i)
+      one_component = one_component && label[i] == 0;
+  }
   // All indices grouped by component, in index order within each (the order of a stable sort
   // by label): one component (most pairs) as they are, else a counting sort (labels are
   // indices).
   std::vector<int> &members = work.order;
   members.resize(n);
-  bool one_component = true;
-  for (int i = 0; i < n; ++i)
-    one_component = one_component && label[i] == 0;
   if (one_component) {
     std::iota(members.begin(), members.end(), 0);
   } else {
@@ -955,6 +993,17 @@ void reduce(const TriangleContact *contacts, int n, const Faces &faces, double e
               return deeper(contacts[x.index], contacts[y.index], x.index, y.index);
             });
   raw.resize(keys.size()); // every field written below (only the growth is zeroed)
+  if (work.normals_a.size() < static_cast<std::size_t>(na))
+    work.normals_a.resize(na);
+  if (work.normals_b.size() < static_cast<std::size_t>(nb))
+    work.normals_b.resize(nb);
+  if (++work.call == 0) { // the stamps wrapped: none may look valid
+    for (auto &e : work.normals_a)
+      e.stamp = 0;
+    for (auto &e : work.normals_b)
+      e.stamp = 0;
+    work.call = 1;
+  }
   for (std::size_t k = 0; k < keys.size(); ++k) {
     const TriangleContact &c = contacts[keys[k].index];
     Raw &r = raw[k];
@@ -968,6 +1017,10 @@ void reduce(const TriangleContact *contacts, int n, const Faces &faces, double e
     r.intersecting = c.intersecting;
     r.exact = c.exact;
     r.apart = c.apart;
+    r.maybe_parallel =
+        params.method == ReductionMethod::clusters &&
+        !clearly_not_parallel(triangle_normal(*faces.a, c.tri_a, work.normals_a, work.call),
+                              triangle_normal(*faces.b, c.tri_b, work.normals_b, work.call));
   }
 
   switch (params.method) {

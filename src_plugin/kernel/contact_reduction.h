@@ -374,6 +374,7 @@ struct ReductionWorkspace {
     int tri_a, tri_b;
     bool intersecting;
     bool exact, apart; // TriangleContact's
+    bool maybe_parallel; // the triangles are not clearly_not_parallel (contact_reduction.cpp)
   };
   std::vector<Raw> raw;
   struct Key { // a triangle contact that counts: its overlap, index and triangles; sorted into
@@ -392,6 +393,16 @@ struct ReductionWorkspace {
   std::vector<int> plain; // one class's members without a polygon (steps 5 and 5c)
   std::vector<double> smooth_scratch; // step 5: the smooth maximum's weights
   std::vector<double> smooth_share;   // step 5: each member's share of its closest point
+  // Per triangle of a and of b: its (unscaled) plane normal and that normal's squared length,
+  // computed once per call however many members share the triangle (a vertex touching a face
+  // is seen by all the triangles around it); valid where the stamp equals `call`.
+  struct TriangleNormal {
+    Eigen::Vector3d normal;
+    double norm2;
+    unsigned stamp = 0;
+  };
+  std::vector<TriangleNormal> normals_a, normals_b;
+  unsigned call = 0;
 };
 
 // Reduces `n` triangle-pair contacts of one pair (entries with overlap <= 0 are ignored) and
