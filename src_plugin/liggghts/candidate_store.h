@@ -60,6 +60,12 @@ public:
     e->step = step_;
     return &e->cache;
   }
+  // Fetches the entry that slot `slot` named last step (the hint entry() tries first) into
+  // the cache: a host asks for its slots in order, and an entry per task missed the cache.
+  void prefetch(std::size_t slot) const {
+    if (slot < hints_.size() && hints_[slot])
+      __builtin_prefetch(hints_[slot]);
+  }
   void end_step();
   std::size_t bytes() const; // heap memory held, dropped entries' included
 
