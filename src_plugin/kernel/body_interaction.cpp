@@ -47,6 +47,8 @@ std::size_t InteractionScratch::bytes() const {
          r.keys.capacity() * sizeof(ReductionWorkspace::Key) +
          r.polygons.capacity() * sizeof(ContactPolygon) +
          r.points.capacity() * sizeof(Eigen::Vector3d) +
+         (r.normals_a.capacity() + r.normals_b.capacity()) *
+             sizeof(ReductionWorkspace::TriangleNormal) +
          ints * sizeof(int) + wall_apart.capacity() +
          4 * wall_planes.n_x.capacity() * sizeof(double) + jobs.capacity() * sizeof(HybridJob) +
          job_offsets.capacity() * sizeof(std::size_t) +
