@@ -43,6 +43,10 @@ public:
     next_hints_.clear();
   }
   tri::CandidateCache *entry(std::size_t slot, std::uint64_t key) {
+    // The hint of a slot kHintAhead further is fetched now: a host asks for its slots in
+    // order, and each entry (one per task, each on lines of its own) missed the cache.
+    if (slot + kHintAhead < hints_.size() && hints_[slot + kHintAhead])
+      __builtin_prefetch(hints_[slot + kHintAhead]);
     Entry *e = slot < hints_.size() ? hints_[slot] : nullptr;
     if (!e || e->key != key)
       e = find_or_add(key);
@@ -59,12 +63,6 @@ public:
     ++touched_;
     e->step = step_;
     return &e->cache;
-  }
-  // Fetches the entry that slot `slot` named last step (the hint entry() tries first) into
-  // the cache: a host asks for its slots in order, and an entry per task missed the cache.
-  void prefetch(std::size_t slot) const {
-    if (slot < hints_.size() && hints_[slot])
-      __builtin_prefetch(hints_[slot]);
   }
   void end_step();
   std::size_t bytes() const; // heap memory held, dropped entries' included
@@ -93,6 +91,7 @@ private:
     Entry *entry = nullptr; // null: empty
   };
   static constexpr std::size_t kChunk = 64; // entries allocated at a time
+  static constexpr std::size_t kHintAhead = 8; // entry(): the hint fetched this many slots ahead
 
   Entry *find_or_add(std::uint64_t key);
   [[gnu::noinline]] Entry *add(std::uint64_t key, std::size_t empty_slot);

@@ -100,8 +100,6 @@ void PairTriGran::collect_tasks() {
       }
       double *history = values && tangential ? values : nullptr;
       double *axis = values && settings_.separation ? values + axis_offset_ : nullptr;
-      if (coherent)
-        candidates_.prefetch(tasks_.size() + kStoreAhead);
       tri::CandidateCache *candidates =
           coherent ? candidates_.entry(tasks_.size(),
                                         tri_liggghts::CandidateStore::pair_key(tag[i], tag[j]))

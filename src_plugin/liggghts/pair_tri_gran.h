@@ -72,8 +72,6 @@ private:
     bool apart = false; // proven apart by its kept gap or axis, from the poses (mark_apart)
   };
   static constexpr std::size_t kPrefetchAhead = 2;
-  // collect_tasks: the candidate store's entry of the task this many slots ahead is fetched.
-  static constexpr std::size_t kStoreAhead = 8;
   void prefetch(const Task &t);
   // A task as the kernel sees it: (a, b) in tag order, its axis copied with the sign of (a, b).
   struct TaskView {
