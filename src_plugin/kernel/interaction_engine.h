@@ -44,7 +44,17 @@ public:
   // Evaluates tasks [0, n): evaluate(k, scratch, stats) returns task k's PairForceResult,
   // using `scratch` (this thread's) and adding the distance kernel's counters to `stats`.
   // threads <= 1: the calling thread alone, no parallel region.
-  template <class Evaluate> void run(std::size_t n, int threads, Evaluate &&evaluate);
+  template <class Evaluate> void run(std::size_t n, int threads, Evaluate &&evaluate) {
+    run(n, threads, [](std::size_t, int) {}, evaluate);
+  }
+  // The same, with prepare(k, thread) called once for each task, on the thread that evaluates
+  // it (`thread`: its index, 0 to threads - 1), before its first evaluate call: the host's own
+  // per-task work (bodies built, pairs proven apart) then runs inside the engine's one parallel
+  // region, next to the evaluation that reads it, instead of in passes of its own (each a
+  // parallel region, or a serial loop, whose data the other core then has to fetch). An
+  // exception thrown by prepare fails the task as evaluate's would, and it is not evaluated.
+  template <class Prepare, class Evaluate>
+  void run(std::size_t n, int threads, Prepare &&prepare, Evaluate &&evaluate);
 
   // Tasks per group: enough deferred kernels to fill the retry and fallback lanes and to fetch
   // the jobs' triangles well ahead (distance_kernels.cpp), few enough that a group's triangles
@@ -113,13 +123,17 @@ private:
   void finish();
 };
 
-template <class Evaluate> void InteractionEngine::run(std::size_t n, int threads, Evaluate &&evaluate) {
+template <class Prepare, class Evaluate>
+void InteractionEngine::run(std::size_t n, int threads, Prepare &&prepare_task,
+                            Evaluate &&evaluate) {
   if (threads < 1)
     threads = 1;
   prepare(n, threads);
   const long count = static_cast<long>(n);
-  auto one = [&](long k, int thread) {
+  auto one = [&](long k, int thread, bool first) {
     try {
+      if (first)
+        prepare_task(static_cast<std::size_t>(k), thread);
       results_[k] = evaluate(static_cast<std::size_t>(k), scratch_[thread], thread_stats_[thread]);
     } catch (const std::exception &e) {
       record_failure(static_cast<std::size_t>(k), e.what());
@@ -135,7 +149,7 @@ template <class Evaluate> void InteractionEngine::run(std::size_t n, int threads
     scratch.defer = true;
     for (long k = first; k < last; ++k) {
       const std::size_t queued = scratch.jobs.size();
-      one(k, thread);
+      one(k, thread, true);
       if (scratch.jobs.size() != queued)
         deferred_[thread].push_back(k);
     }
@@ -151,7 +165,7 @@ template <class Evaluate> void InteractionEngine::run(std::size_t n, int threads
     }
     for (std::size_t j = 0; j < deferred_[thread].size(); ++j) {
       scratch.resume_job = static_cast<int>(j);
-      one(deferred_[thread][j], thread);
+      one(deferred_[thread][j], thread, false);
     }
     scratch.resume_job = -1;
   };

@@ -259,10 +259,7 @@ void FixTriParticles::transform_atom(int i) {
   const int s = shape_index(i);
   if (s < 0)
     return;
-  if (body_stamp_[i] != evaluation_) { // each entry is this thread's alone
-    body_stamp_[i] = evaluation_;
-    build_body(i);
-  }
+  ensure_body_of(i);
   const tri::Body &b = bodies_[i];
   tri::transform_soa(shapes_[s].soa, b.pose.q.toRotationMatrix(), b.pose.x, world_[i]);
 }
@@ -280,38 +277,13 @@ void FixTriParticles::size_world(std::size_t n) {
     bodies_[k].triangles = &world_[k];
 }
 
-template <class Work>
-void FixTriParticles::once_per_evaluation(const int *atoms, int n, int threads,
-                                          std::vector<long long> &stamp, Work work) {
+void FixTriParticles::prepare_bodies() {
   size_world(static_cast<std::size_t>(atom->nlocal + atom->nghost));
-  // Each atom once: marked here, serially, then processed (possibly on several threads).
-  pending_world_.clear();
-  for (int k = 0; k < n; ++k) {
-    const int i = atoms[k];
-    if (stamp[i] == evaluation_)
-      continue;
-    stamp[i] = evaluation_;
-    pending_world_.push_back(i);
-  }
-  const int count = static_cast<int>(pending_world_.size());
-  if (threads > 1 && count >= 64) {
-#pragma omp parallel for schedule(static) num_threads(threads)
-    for (int k = 0; k < count; ++k)
-      work(pending_world_[k]);
-  } else {
-    for (int k = 0; k < count; ++k)
-      work(pending_world_[k]);
-  }
 }
 
-void FixTriParticles::ensure_bodies(const int *atoms, int n, int threads) {
-  once_per_evaluation(atoms, n, threads, body_stamp_, [this](int i) { build_body(i); });
-}
-
-void FixTriParticles::ensure_world_triangles_of(int i) {
+template <class Work> void FixTriParticles::once_this_evaluation(long long *stamp, Work work) {
   // GCC's atomic builtins on the plain stamp (C++17 has no atomic_ref): every other access to
   // the stamps is outside parallel regions.
-  long long *stamp = &world_stamp_[i];
   for (int spins = 0;; ++spins) {
     long long seen = __atomic_load_n(stamp, __ATOMIC_ACQUIRE);
     if (seen == evaluation_)
@@ -327,7 +299,7 @@ void FixTriParticles::ensure_world_triangles_of(int i) {
                                      __ATOMIC_ACQUIRE))
       continue;
     try {
-      transform_atom(i);
+      work();
     } catch (...) { // (no memory) unclaimed again: a waiting task claims it, none waits for ever
       __atomic_store_n(stamp, 0LL, __ATOMIC_RELEASE);
       throw;
@@ -337,11 +309,18 @@ void FixTriParticles::ensure_world_triangles_of(int i) {
   }
 }
 
+void FixTriParticles::ensure_body_of(int i) {
+  once_this_evaluation(&body_stamp_[i], [&] { build_body(i); });
+}
+
+void FixTriParticles::ensure_world_triangles_of(int i) {
+  once_this_evaluation(&world_stamp_[i], [&] { transform_atom(i); });
+}
+
 void FixTriParticles::update_world_triangles(int n) {
-  std::vector<int> all(static_cast<std::size_t>(n));
+  prepare_bodies();
   for (int i = 0; i < n; ++i)
-    all[i] = i;
-  once_per_evaluation(all.data(), n, 1, world_stamp_, [this](int i) { transform_atom(i); });
+    ensure_world_triangles_of(i);
 }
 
 /* ---------------- per-atom storage: the LIGGGHTS callbacks ---------------- */
@@ -509,7 +488,7 @@ double FixTriParticles::memory_usage() {
   for (const tri::TriangleSoA &w : world_)
     bytes += 3.0 * w.x.capacity() * sizeof(double) + sizeof(w);
   bytes += static_cast<double>(bodies_.capacity() * sizeof(tri::Body) +
-                               world_stamp_.capacity() * sizeof(long long) +
-                               pending_world_.capacity() * sizeof(int));
+                               (world_stamp_.capacity() + body_stamp_.capacity()) *
+                                   sizeof(long long));
   return bytes;
 }

@@ -137,13 +137,17 @@ public:
   // them, by the thread that transforms the atom, so that a contact style's tasks read one
   // compact record (the same values: nothing changes x, v or omega between pre_force and the
   // contact styles) instead of five per-atom arrays that the integrator wrote on another core.
-  // Before that, ensure_bodies builds the record without the triangles (pose, state, frame):
+  // Before that, ensure_body_of builds the record without the triangles (pose, state, frame):
   // enough for the kernel to prove a pair apart by its kept gap or axis (tri::proven_apart).
   const tri::Body &body(int i) const { return bodies_[i]; }
-  // Body records (not the world-frame triangles) of the atoms, at most once per force
-  // evaluation (pre_force starts a new one), before a contact style's loop. `threads` > 1
-  // shares the atoms among OpenMP threads.
-  void ensure_bodies(const int *atoms, int n, int threads = 1);
+  // Storage for every owned and ghost atom's record and triangles: called by a contact style,
+  // outside its parallel loop, before it asks for any (pre_force sizes it too).
+  void prepare_bodies();
+  // Atom i's Body record (not its world-frame triangles), at most once per force evaluation
+  // (pre_force starts a new one). Callable from a contact style's parallel loop, like
+  // ensure_world_triangles_of: the first task that needs the record builds it on its thread,
+  // so a step has no separate pass over the tasks' atoms.
+  void ensure_body_of(int i);
   // World-frame triangles only where needed (issue 12, item 4), each atom's computed from x and
   // its quaternion at most once per force evaluation. For atoms [0, n), outside a parallel
   // loop (output):
@@ -152,7 +156,7 @@ public:
   // task (on any thread) that needs atom i transforms it and the others wait for it. Computed
   // just before they are read, the triangles are in that core's cache when the kernel gathers
   // them; computed for every atom first, a pile's 3 MB of them had left the cache by then.
-  // Its Body record must be built already (ensure_bodies).
+  // Builds the Body record too, if no task has yet.
   void ensure_world_triangles_of(int i);
   // Insertion (particle_insertion.h): the rules a template's shape follows, and atom i, just
   // inserted by a template with a shape (no tag yet), is given that shape.
@@ -169,15 +173,13 @@ private:
   // Per atom: the evaluation its world_ is of; minus it while a thread is transforming it
   // (ensure_world_triangles_of, read and claimed atomically there).
   std::vector<long long> world_stamp_;
-  std::vector<long long> body_stamp_;  // per atom: the evaluation its Body record is of
+  std::vector<long long> body_stamp_;  // per atom: the same for its Body record (ensure_body_of)
   long long evaluation_ = 1;           // force evaluations so far + 1 (pre_force)
-  std::vector<int> pending_world_;     // scratch of once_per_evaluation
   void build_body(int i);              // bodies_[i] without its triangles
   void transform_atom(int i);          // bodies_[i] (if not built yet) and world_[i]
-  // Runs `work` on each atom of `atoms` whose `stamp` is not this evaluation's, once.
-  template <class Work>
-  void once_per_evaluation(const int *atoms, int n, int threads, std::vector<long long> &stamp,
-                           Work work);
+  // Runs `work` once this force evaluation for the atom whose stamp is `stamp`, whichever
+  // thread comes first; the others wait until it is done.
+  template <class Work> void once_this_evaluation(long long *stamp, Work work);
   double density_ = 0.0, epsilon_ = 0.0;
   bool epsilon_auto_ = false, epsilon_resolved_ = false;
   int check_timestep_every_ = 0; // -1 off, 0 at setup, N: also every N steps

@@ -211,29 +211,14 @@ void FixTriWall::build_wall(int k, std::vector<Eigen::Vector3d> &nodes,
   wall.state.mass = 0.0;
 }
 
-void FixTriWall::build_walls(bool update_history, int nthreads) {
-  const int n = static_cast<int>(ntasks_);
-  auto build = [&](int k, std::vector<Eigen::Vector3d> &nodes,
-                   std::vector<Eigen::Vector3d> &node_velocities) {
-    build_wall(k, nodes, node_velocities);
-    Task &task = tasks_[k];
-    const tri::SeparationCache cache{settings_.separation ? axis(task.atom, task.mesh) : nullptr,
-                                     update_history, task.candidates};
-    task.apart = tri::proven_apart(particles_->body(task.atom), task.wall,
-                                   settings_.interaction, cache);
-  };
-  if (nthreads > 1 && n >= 64) {
-#pragma omp parallel num_threads(nthreads)
-    {
-      std::vector<Eigen::Vector3d> nodes, node_velocities;
-#pragma omp for schedule(static)
-      for (int k = 0; k < n; ++k)
-        build(k, nodes, node_velocities);
-    }
-  } else {
-    for (int k = 0; k < n; ++k)
-      build(k, nodes_, node_velocities_);
-  }
+void FixTriWall::prepare(int k, bool update_history, NodeScratch &scratch) {
+  build_wall(k, scratch.nodes, scratch.velocities);
+  Task &task = tasks_[k];
+  particles_->ensure_body_of(task.atom);
+  const tri::SeparationCache cache{settings_.separation ? axis(task.atom, task.mesh) : nullptr,
+                                   update_history, task.candidates};
+  task.apart = tri::proven_apart(particles_->body(task.atom), task.wall, settings_.interaction,
+                                 cache);
 }
 
 tri::PairForceResult FixTriWall::interact(int k, double dt, bool update_history,
@@ -254,7 +239,7 @@ tri::PairForceResult FixTriWall::interact(int k, double dt, bool update_history,
   if (task.apart)
     return tri::apart_result(particle, task.wall, s, dt, history.data(), scratch, stats);
   const tri::SeparationCache cache{settings_.separation ? axis(a, task.mesh) : nullptr,
-                                   update_history, task.candidates, true}; // build_walls tested
+                                   update_history, task.candidates, true}; // prepare tested
   particles_->ensure_world_triangles_of(a);
   return tri::body_interaction(particle, task.wall, s, dt, history.data(), scratch, stats, cache);
 }
@@ -265,13 +250,14 @@ void FixTriWall::compute(bool update_history) {
   if (patches_.size() < ntasks_)
     patches_.resize(ntasks_);
   const int nthreads = tri_liggghts::pair_loop_threads(settings_.loop, ntasks_);
-  task_atoms_.clear();
-  for (std::size_t k = 0; k < ntasks_; ++k)
-    task_atoms_.push_back(tasks_[k].atom);
-  particles_->ensure_bodies(task_atoms_.data(), static_cast<int>(task_atoms_.size()), nthreads);
-  build_walls(update_history, nthreads);
+  if (static_cast<int>(node_scratch_.size()) < nthreads)
+    node_scratch_.resize(nthreads);
+  particles_->prepare_bodies();
   const double dt = update->dt;
   engine_.run(ntasks_, nthreads,
+              [&](std::size_t k, int thread) {
+                prepare(static_cast<int>(k), update_history, node_scratch_[thread]);
+              },
               [&](std::size_t k, tri::InteractionScratch &scratch, tri::ContactStats &stats) {
                 return interact(static_cast<int>(k), dt, update_history, scratch, stats);
               });
@@ -348,6 +334,7 @@ double FixTriWall::memory_usage() {
     bytes += 3.0 * patch.x.capacity() * sizeof(double);
   for (const Task &task : tasks_)
     bytes += task.triangles.capacity() * sizeof(int);
-  bytes += static_cast<double>(task_atoms_.capacity() * sizeof(int));
+  for (const NodeScratch &s : node_scratch_)
+    bytes += (s.nodes.capacity() + s.velocities.capacity()) * sizeof(Eigen::Vector3d);
   return bytes + static_cast<double>(engine_.bytes()) + static_cast<double>(candidates_.bytes());
 }

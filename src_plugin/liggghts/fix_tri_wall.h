@@ -62,8 +62,8 @@ private:
     int atom, mesh;
     std::vector<int> triangles; // mesh-local indices, ordered by global triangle id
     tri::CandidateCache *candidates = nullptr; // kept candidates of (atom, mesh), or null
-    tri::Body wall;     // the patch (patches_[k]) as the kernel sees it (build_walls)
-    bool apart = false; // proven apart by its kept gap or axis (build_walls)
+    tri::Body wall;     // the patch (patches_[k]) as the kernel sees it (prepare)
+    bool apart = false; // proven apart by its kept gap or axis (prepare)
   };
   std::vector<class FixMeshSurface *> meshes_;
   std::vector<std::string> mesh_ids_;
@@ -77,12 +77,14 @@ private:
   double *axis(int a, int m) {
     return history_[a] + meshes_.size() * tri::kHistoryDoubles + 3 * static_cast<std::size_t>(m);
   }
-  std::vector<int> task_atoms_;
   std::vector<Task> tasks_; // the first ntasks_ are this step's
   std::size_t ntasks_ = 0;
   std::vector<std::vector<std::pair<int, int>>> near_;
   std::vector<tri::TriangleSoA> patches_;
-  std::vector<Eigen::Vector3d> nodes_, node_velocities_; // build_wall's scratch, one thread
+  struct NodeScratch { // build_wall's, one per thread
+    std::vector<Eigen::Vector3d> nodes, velocities;
+  };
+  std::vector<NodeScratch> node_scratch_;
   tri::InteractionEngine engine_;
   tri_liggghts::CandidateStore candidates_;
   int board_slot_ = -1;
@@ -90,10 +92,11 @@ private:
 
   void compute(bool update_history);
   void collect_tasks();
-  // Each task's wall patch and Body; then whether its kept gap or axis proves it apart from the
+  // A task's first work, on the engine's thread that evaluates it: its wall patch and Body, its
+  // particle's Body record; then whether its kept gap or axis proves it apart from the
   // particle's pose (tri::proven_apart: no world-frame particle triangles needed; the other
-  // tasks ask for them as they run, FixTriParticles::ensure_world_triangles_of).
-  void build_walls(bool update_history, int nthreads);
+  // tasks ask for them as they go on, FixTriParticles::ensure_world_triangles_of).
+  void prepare(int k, bool update_history, NodeScratch &scratch);
   void build_wall(int k, std::vector<Eigen::Vector3d> &nodes,
                   std::vector<Eigen::Vector3d> &node_velocities);
   tri::PairForceResult interact(int k, double dt, bool update_history,

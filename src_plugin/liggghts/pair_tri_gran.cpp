@@ -68,7 +68,6 @@ void PairTriGran::collect_tasks() {
       settings_.interaction.coefficients.tangential == tri::TangentialModel::history;
   const bool coherent = settings_.interaction.coherence > 0.0;
   tasks_.clear();
-  task_atoms_.clear();
   candidates_.begin_step();
   // Every neighbour pair every step, most of them apart: the arrays in locals, which the
   // stores below cannot change (through atom-> they are reloaded for every pair).
@@ -105,8 +104,6 @@ void PairTriGran::collect_tasks() {
                                         tri_liggghts::CandidateStore::pair_key(tag[i], tag[j]))
                    : nullptr;
       tasks_.push_back({i, j, tag[j] < tag[i], history, axis, values, touching, candidates});
-      task_atoms_.push_back(i);
-      task_atoms_.push_back(j);
     }
   }
   candidates_.end_step();
@@ -127,7 +124,7 @@ tri::PairForceResult PairTriGran::evaluate(const Task &task, tri::InteractionScr
   if (task.apart && tri::apart_needs_nothing(task.history))
     return tri::apart_result(stats); // the axis stays as it is: its view would write it back
   TaskView v = view(task);
-  // mark_apart has tested the kept gap and axis.
+  // prepare() has tested the kept gap and axis.
   const tri::SeparationCache cache{task.axis ? v.axis : nullptr, update_history, task.candidates,
                                    true};
   tri::InteractionSettings s = settings_.interaction;
@@ -145,26 +142,13 @@ tri::PairForceResult PairTriGran::evaluate(const Task &task, tri::InteractionScr
   return r;
 }
 
-void PairTriGran::mark_apart(bool update_history, int nthreads) {
-  const int n = static_cast<int>(tasks_.size());
-  auto mark = [&](int k) {
-    if (k + static_cast<int>(kPrefetchAhead) < n)
-      prefetch(tasks_[k + kPrefetchAhead]);
-    Task &task = tasks_[k];
-    TaskView v = view(task);
-    const tri::SeparationCache cache{task.axis ? v.axis : nullptr, update_history,
-                                     task.candidates};
-    task.apart = tri::proven_apart(particles_->body(v.a), particles_->body(v.b),
-                                   settings_.interaction, cache);
-  };
-  if (nthreads > 1 && n >= 64) {
-#pragma omp parallel for schedule(static) num_threads(nthreads)
-    for (int k = 0; k < n; ++k)
-      mark(k);
-  } else {
-    for (int k = 0; k < n; ++k)
-      mark(k);
-  }
+void PairTriGran::prepare(Task &task, bool update_history) {
+  particles_->ensure_body_of(task.i);
+  particles_->ensure_body_of(task.j);
+  TaskView v = view(task);
+  const tri::SeparationCache cache{task.axis ? v.axis : nullptr, update_history, task.candidates};
+  task.apart = tri::proven_apart(particles_->body(v.a), particles_->body(v.b),
+                                 settings_.interaction, cache);
 }
 
 // A task's kept state (candidates, contact history, axis) is scattered over the heap; asked for
@@ -188,9 +172,9 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
 
   task_geometry_.resize(tasks_.size());
   const int nthreads = tri_liggghts::pair_loop_threads(settings_.loop, tasks_.size());
-  particles_->ensure_bodies(task_atoms_.data(), static_cast<int>(task_atoms_.size()), nthreads);
-  mark_apart(update_history, nthreads);
+  particles_->prepare_bodies();
   engine_.run(tasks_.size(), nthreads,
+              [&](std::size_t k, int) { prepare(tasks_[k], update_history); },
               [&](std::size_t k, tri::InteractionScratch &scratch, tri::ContactStats &stats) {
                 if (k + kPrefetchAhead < tasks_.size())
                   prefetch(tasks_[k + kPrefetchAhead]);

@@ -69,7 +69,7 @@ private:
     double *touching_values; // all of this pair style's history values, or null
     int *touching;   // LIGGGHTS keeps (migrates, restarts) the history only where this is set
     tri::CandidateCache *candidates; // the pair's kept candidates, or null
-    bool apart = false; // proven apart by its kept gap or axis, from the poses (mark_apart)
+    bool apart = false; // proven apart by its kept gap or axis, from the poses (prepare)
   };
   static constexpr std::size_t kPrefetchAhead = 2;
   void prefetch(const Task &t);
@@ -84,15 +84,15 @@ private:
   // (a, b).
   tri::PairForceResult evaluate(const Task &task, tri::InteractionScratch &scratch,
                                 tri::ContactStats &stats, double dt, bool update_history);
-  // Sets each task's `apart` (tri::proven_apart, from the atoms' Body records without their
-  // triangles): only the others' atoms need world-frame triangles this step.
-  void mark_apart(bool update_history, int nthreads);
+  // A task's first work, on the engine's thread that evaluates it: its atoms' Body records,
+  // and `apart` (tri::proven_apart, from those records without their triangles): only the
+  // other tasks' atoms need world-frame triangles this step.
+  void prepare(Task &task, bool update_history);
   class FixTriParticles *particles_ = nullptr;
   int board_slot_ = -1;
   tri_liggghts::ContactSettings settings_;
   tri_liggghts::MaterialTable materials_;
   std::vector<Task> tasks_;
-  std::vector<int> task_atoms_; // both atoms of every task, for their world-frame triangles
   std::vector<tri_liggghts::PairGeometry> task_geometry_; // per task, for the run-safety check
   tri::InteractionEngine engine_;
   tri_liggghts::CandidateStore candidates_;
