@@ -11,8 +11,9 @@
 // std::terminate); the engine keeps the message of the lowest failing task, and the host
 // reports it through its own error path after the loop, naming the bodies of that task.
 // Memory: scratch grows to the largest task seen and is kept (bytes() counts it).
-// Groups: tasks run in groups of kGroupTasks consecutive ones, on one thread each (the
-// schedule: split_groups below). Within a
+// Groups: tasks run in groups of consecutive ones (tasks_per_group: kGroupTasks, fewer on
+// several threads when tasks are few), on one thread each (the schedule: split_groups below).
+// Within a
 // group, a task that reaches the distance kernel (kept candidates or a search's) defers it
 // (InteractionScratch::defer); the group's kernels run together (hybrid_distances_jobs: retries and fallbacks fill
 // the vector lanes across body pairs), then those tasks are evaluated a second time and go on

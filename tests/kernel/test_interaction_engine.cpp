@@ -118,13 +118,35 @@ TEST(InteractionEngine, ThreadCountChangesNothing) {
   EXPECT_GT(one.tally.distance.triangle_pairs_tested, 0);
 }
 
+// Group sizes: kGroupTasks on one thread; on several, at least kGroupsPerThread groups a
+// thread where the tasks allow, never below kMinGroupTasks nor above kGroupTasks. (One thread
+// evaluating 11 tasks as one group and four as groups of 8 and 3 give the same results: above.)
+TEST(InteractionEngine, GroupsShrinkWhenTasksAreFewForTheThreads) {
+  using E = tri::InteractionEngine;
+  EXPECT_EQ(E::tasks_per_group(5, 1), E::kGroupTasks);
+  EXPECT_EQ(E::tasks_per_group(100000, 1), E::kGroupTasks);
+  EXPECT_EQ(E::tasks_per_group(100000, 2), E::kGroupTasks);
+  EXPECT_EQ(E::tasks_per_group(11, 4), E::kMinGroupTasks);
+  EXPECT_EQ(E::tasks_per_group(0, 2), E::kMinGroupTasks);
+  const long walls = 197; // a wall's tasks in the settled pile: 12 each, 17 groups, not 7
+  EXPECT_EQ(E::tasks_per_group(walls, 2), walls / (E::kGroupsPerThread * 2));
+  for (int threads = 2; threads <= 16; ++threads)
+    for (long n = 0; n < 5000; n += 37) {
+      const long g = E::tasks_per_group(n, threads);
+      EXPECT_GE(g, E::kMinGroupTasks);
+      EXPECT_LE(g, E::kGroupTasks);
+      if (g > E::kMinGroupTasks) {
+        EXPECT_GE((n + g - 1) / g, E::kGroupsPerThread * threads) << n << " tasks";
+      }
+    }
+}
+
 // The schedule on several threads (contiguous ranges, the rest taken from their backs): every
 // task runs exactly once and lands in its own slot, for task counts below, at and above a
 // group and ranges of very uneven cost (the last tasks spin, as a hopper's crowded pairs).
 TEST(InteractionEngine, EveryTaskRunsOnceWhateverTheSchedule) {
   for (const int threads : {2, 3, 5})
-    for (const std::size_t n : {std::size_t(0), std::size_t(1), std::size_t(15), std::size_t(16),
-                                std::size_t(17), std::size_t(1000)}) {
+    for (const std::size_t n : {0, 1, 7, 8, 9, 15, 16, 17, 31, 32, 33, 197, 1000}) {
       tri::InteractionEngine engine;
       std::vector<std::atomic<int>> runs(n);
       for (int repeat = 0; repeat < 2; ++repeat) { // the ranges are reset between runs
