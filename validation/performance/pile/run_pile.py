@@ -280,6 +280,13 @@ def summarise(results):
         if "spheres" in kinds:
             e["spheres"].append(kinds["spheres"]["ms_per_step"])
             e["ratios"].append(kinds["rocks"]["ms_per_step"] / kinds["spheres"]["ms_per_step"])
+    # Threads and ranks: each repetition's speed-up over the 1x1 run of the same repetition (run
+    # just before it: a paired ratio, less exposed to the host's load than best against best).
+    for key, kinds in by_rep.items():
+        one = by_rep.get(key[:5] + (1, 1, key[7]), {}).get("rocks")
+        if "rocks" in kinds and one and (key[5], key[6]) != (1, 1):
+            rows[key[:7]].setdefault("speedups", []).append(
+                one["ms_per_step"] / kinds["rocks"]["ms_per_step"])
     return rows
 
 
@@ -292,8 +299,8 @@ def table(results):
     rows = summarise(results)
     print("| build | deck | rocks | phase | threads x ranks | spheres ms/step | rocks ms/step | "
           "ratio (median) | CPU ratio (median) | pairs checked | in contact | triangle pairs tested | "
-          "within layer | tested/within | fallbacks | load |")
-    print("|---|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|")
+          "within layer | tested/within | fallbacks | load | speed-up over 1x1 (median) |")
+    print("|---|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|")
     order = {"free": 0, "forming": 1, "settled": 2, "formed": 3, "gas": 4}
     labels = []
     for r in results:
@@ -311,7 +318,9 @@ def table(results):
         print(f"| {k[0]} | {k[1]} | {k[2]**3} x {k[3]} | {k[4]} | {k[5]}x{k[6]} | {sph} | {min(e['rocks']):.3f} | "
               f"{ratio} | {cpu_ratio} | {c['pairs_checked']:.0f} | {c['pairs_in_contact']:.0f} | "
               f"{c['triangle_pairs_tested']:.0f} | {c['triangle_contacts']:.0f} | {tw} | "
-              f"{c['fallbacks']:.0f} | {min(e['loads']):.1f}-{max(e['loads']):.1f} |")
+              f"{c['fallbacks']:.0f} | {min(e['loads']):.1f}-{max(e['loads']):.1f} | "
+              + (f"{median(e['speedups']):.2f}x ({', '.join(f'{v:.2f}' for v in e['speedups'])}) |"
+                 if e.get("speedups") else "– |"))
 
 
 def plot(results, path):
