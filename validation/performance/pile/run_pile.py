@@ -29,6 +29,7 @@ tested / within the layers, fallbacks.
       [--tri build/src_plugin/driver/liggghts-tri] [--liggghts /usr/bin/liggghts]
       [--work /tmp/pile_bench] [--label NAME] [--prepare]
   /usr/bin/python3 validation/performance/pile/run_pile.py --plot pile.png --label main --label speed
+  /usr/bin/python3 validation/performance/pile/run_pile.py --floors floors.png --label a --label b
 
 Every run is checked (exit status 0, no ERROR, no lost atoms, no nan). Results are appended to
 WORK/results_LABEL.json; --plot draws the PNG of one or more labels (Debian's matplotlib).
@@ -377,6 +378,73 @@ def plot(results, path):
     print(f"wrote {path}")
 
 
+# The issue's floors (issue 12): ratio to spheres at 1 thread and 1 rank, speed-up over 1x1.
+RATIO_FLOORS = {("hopper", "formed"): 25.0, ("pile", "settled"): 40.0, ("pile", "free"): 3.0}
+SPEEDUP_FLOORS = {"threads": 1.8, "ranks": 1.7}
+
+
+def plot_floors(results, path):
+    """Every repetition against the floors: each run's ratios to spheres (1x1) per deck and
+    phase, and the speed-ups of threads and ranks over the 1x1 run of the same repetition."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    rows = summarise(results)
+    labels = []
+    for r in results:
+        if r["label"] not in labels:
+            labels.append(r["label"])
+    cases = sorted({(k[1], k[3], k[4]) for k in rows if k[5] == 1 and k[6] == 1 and rows[k]["ratios"]},
+                   key=lambda c: (c[0] != "hopper", c[2], c[1]))
+    par = sorted({(k[1], k[3], k[4], k[5], k[6]) for k in rows if rows[k].get("speedups")})
+    fig, axes = plt.subplots(1, 2, figsize=(12, 4.4), gridspec_kw={"width_ratios": [max(1, len(cases)), max(1, len(par))]})
+    colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+
+    def dots(ax, x, values, li):
+        n = len(values)
+        xs = [x + (li - (len(labels) - 1) / 2) * 0.18 + (j - (n - 1) / 2) * 0.03 for j in range(n)]
+        ax.plot(xs, values, "o", ms=4, color=colours[li % len(colours)],
+                label=labels[li] if x == 0 else None)
+        ax.plot([min(xs) - 0.03, max(xs) + 0.03], [median(values)] * 2, "-", lw=2,
+                color=colours[li % len(colours)])
+
+    for ci, (geometry, ntri, phase) in enumerate(cases):
+        for li, label in enumerate(labels):
+            e = rows.get((label, geometry, 10 if geometry == "hopper" else 8, ntri, phase, 1, 1))
+            e = e or next((rows[k] for k in rows if k[0] == label and k[1] == geometry and
+                           k[3] == ntri and k[4] == phase and k[5] == 1 and k[6] == 1), None)
+            if e and e["ratios"]:
+                dots(axes[0], ci, e["ratios"], li)
+        floor = RATIO_FLOORS.get((geometry, phase))
+        if floor:
+            axes[0].plot([ci - 0.45, ci + 0.45], [floor] * 2, "k--", lw=1)
+            axes[0].text(ci + 0.45, floor * 1.04, f"floor {floor:g}x", fontsize=8, ha="right")
+    axes[0].set_xticks(range(len(cases)))
+    axes[0].set_xticklabels([f"{g} x {t}\n{p}" for g, t, p in cases], fontsize=8)
+    axes[0].set_yscale("log")
+    axes[0].set_ylabel("rocks / spheres of equal mass (time per step)")
+    axes[0].set_title("1 thread, 1 rank: each repetition (bar: median)")
+    axes[0].legend(fontsize=8)
+    for pi, (geometry, ntri, phase, threads, ranks) in enumerate(par):
+        for li, label in enumerate(labels):
+            e = next((rows[k] for k in rows if k[0] == label and k[1:2] == (geometry,) and
+                      k[3:] == (ntri, phase, threads, ranks)), None)
+            if e and e.get("speedups"):
+                dots(axes[1], pi, e["speedups"], li)
+        floor = SPEEDUP_FLOORS["threads" if threads > 1 else "ranks"]
+        axes[1].plot([pi - 0.45, pi + 0.45], [floor] * 2, "k--", lw=1)
+        axes[1].text(pi + 0.45, floor + 0.02, f"floor {floor:g}x", fontsize=8, ha="right")
+        axes[1].plot([pi - 0.45, pi + 0.45], [max(threads, ranks)] * 2, "k:", lw=0.8)
+    axes[1].set_xticks(range(len(par)))
+    axes[1].set_xticklabels([f"{g} x {t} {p}\n{th} threads x {r} ranks" for g, t, p, th, r in par],
+                            fontsize=8)
+    axes[1].set_ylabel("speed-up over 1 thread, 1 rank (same repetition)")
+    axes[1].set_title("threads and ranks (dotted: ideal)")
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    print(f"wrote {path}")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--tri", default=os.environ.get(
@@ -406,9 +474,11 @@ def main():
     ap.add_argument("--settle-timeout", type=float, default=7200)
     ap.add_argument("--table", action="store_true", help="print the table of the labels' results")
     ap.add_argument("--plot", metavar="PNG", help="draw the labels' results")
+    ap.add_argument("--floors", metavar="PNG",
+                    help="draw every repetition of the labels against the issue's floors")
     a = ap.parse_args()
     labels = a.label or ["speed"]
-    if a.table or a.plot:
+    if a.table or a.plot or a.floors:
         results = []
         for label in labels:
             # NAME=SOURCE: the results of label SOURCE (or of the file SOURCE.json) shown as
@@ -423,6 +493,8 @@ def main():
             table(results)
         if a.plot:
             plot(results, a.plot)
+        if a.floors:
+            plot_floors(results, a.floors)
         return
     a.label = labels[0]
     a.n = a.n or ([10] if a.geometry == "hopper" else [8])
