@@ -13,13 +13,13 @@
 // Memory: scratch grows to the largest task seen and is kept (bytes() counts it).
 // Groups: tasks run in groups of consecutive ones (tasks_per_group: kGroupTasks, fewer on
 // several threads when tasks are few), on one thread each (the schedule: split_groups below).
-// Within a
-// group, a task that reaches the distance kernel (kept candidates or a search's) defers it
-// (InteractionScratch::defer); the group's kernels run together (hybrid_distances_jobs: retries and fallbacks fill
-// the vector lanes across body pairs), then those tasks are evaluated a second time and go on
-// from their results. The results are bitwise those of evaluating each task alone. `evaluate`
-// must therefore be callable twice for a task, giving body_interaction the same bodies (the
-// hosts' callables read the step's data and write only through body_interaction).
+// Within a group, a task that reaches the distance kernel (kept candidates or a search's)
+// defers it (InteractionScratch::defer); the group's kernels run together
+// (hybrid_distances_jobs: retries and fallbacks fill the vector lanes across body pairs), then
+// those tasks are evaluated a second time and go on from their results. The results are
+// bitwise those of evaluating each task alone. `evaluate` must therefore be callable twice
+// for a task, giving body_interaction the same bodies (the hosts' callables read the step's
+// data and write only through body_interaction).
 #pragma once
 
 #include "body_interaction.h"

@@ -296,6 +296,11 @@ def median(v):
     return v[len(v) // 2] if len(v) % 2 else 0.5 * (v[len(v) // 2 - 1] + v[len(v) // 2])
 
 
+def labels_in_order(results):
+    """The results' labels, in the order they first appear (the order they were given)."""
+    return list(dict.fromkeys(r["label"] for r in results))
+
+
 def table(results):
     rows = summarise(results)
     print("| build | deck | rocks | phase | threads x ranks | spheres ms/step | rocks ms/step | "
@@ -303,10 +308,7 @@ def table(results):
           "within layer | tested/within | fallbacks | load | speed-up over 1x1 (median) |")
     print("|---|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|")
     order = {"free": 0, "forming": 1, "settled": 2, "formed": 3, "gas": 4}
-    labels = []
-    for r in results:
-        if r["label"] not in labels:
-            labels.append(r["label"])
+    labels = labels_in_order(results)
     for k in sorted(rows, key=lambda k: (labels.index(k[0]), k[1], k[2], k[3], order.get(k[4], 9),
                                          k[5], k[6])):
         e = rows[k]
@@ -329,7 +331,7 @@ def plot(results, path):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     rows = summarise(results)
-    labels = sorted({k[0] for k in rows}, key=lambda l: [r["label"] for r in results].index(l))
+    labels = [l for l in labels_in_order(results) if any(k[0] == l for k in rows)]
     phases = ["free", "forming", "settled", "gas"]  # gas: --geometry gas
 
     def geometry(phase):
@@ -390,10 +392,7 @@ def plot_floors(results, path):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     rows = summarise(results)
-    labels = []
-    for r in results:
-        if r["label"] not in labels:
-            labels.append(r["label"])
+    labels = labels_in_order(results)
     cases = sorted({(k[1], k[3], k[4]) for k in rows if k[5] == 1 and k[6] == 1 and rows[k]["ratios"]},
                    key=lambda c: (c[0] != "hopper", c[2], c[1]))
     par = sorted({(k[1], k[3], k[4], k[5], k[6]) for k in rows if rows[k].get("speedups")})
@@ -410,9 +409,8 @@ def plot_floors(results, path):
 
     for ci, (geometry, ntri, phase) in enumerate(cases):
         for li, label in enumerate(labels):
-            e = rows.get((label, geometry, 10 if geometry == "hopper" else 8, ntri, phase, 1, 1))
-            e = e or next((rows[k] for k in rows if k[0] == label and k[1] == geometry and
-                           k[3] == ntri and k[4] == phase and k[5] == 1 and k[6] == 1), None)
+            e = next((rows[k] for k in rows if k[0] == label and k[1] == geometry and
+                      k[3:] == (ntri, phase, 1, 1)), None)
             if e and e["ratios"]:
                 dots(axes[0], ci, e["ratios"], li)
         floor = RATIO_FLOORS.get((geometry, phase))
@@ -427,7 +425,7 @@ def plot_floors(results, path):
     axes[0].legend(fontsize=8)
     for pi, (geometry, ntri, phase, threads, ranks) in enumerate(par):
         for li, label in enumerate(labels):
-            e = next((rows[k] for k in rows if k[0] == label and k[1:2] == (geometry,) and
+            e = next((rows[k] for k in rows if k[0] == label and k[1] == geometry and
                       k[3:] == (ntri, phase, threads, ranks)), None)
             if e and e.get("speedups"):
                 dots(axes[1], pi, e["speedups"], li)
