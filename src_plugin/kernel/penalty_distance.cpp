@@ -49,7 +49,9 @@ TRI_LANE void penalty_lane(const double (*c)[kPairLanes], int l, double weight, 
   if constexpr (Resume) {
     z0 = start[0][l], z1 = start[1][l], z2 = start[2][l], z3 = start[3][l];
   }
-  int converged_at = 0;
+  // The first iteration whose step was within tolerance, carried as a double: an int select
+  // on a double comparison mixes mask widths, which g++ 12 does not vectorise.
+  double first_converged = INFINITY;
 #pragma GCC unroll 32
   for (int it = 1; it <= Iterations; ++it) {
     // Penalty terms: violations of the six constraints and their active-set indicators.
@@ -85,7 +87,7 @@ TRI_LANE void penalty_lane(const double (*c)[kPairLanes], int l, double weight, 
     const double x0 = y0 * inv0 - l10 * x1 - l20 * x2 - l30 * x3;
     z0 += x0, z1 += x1, z2 += x2, z3 += x3;
     const double step2 = x0 * x0 + x1 * x1 + x2 * x2 + x3 * x3;
-    converged_at = (converged_at == 0 && step2 <= tol2) ? it : converged_at;
+    first_converged = std::min(first_converged, step2 <= tol2 ? double(it) : INFINITY);
   }
 
   out.z[0][l] = z0, out.z[1][l] = z1, out.z[2][l] = z2, out.z[3][l] = z3;
@@ -99,7 +101,7 @@ TRI_LANE void penalty_lane(const double (*c)[kPairLanes], int l, double weight, 
     out.point_a[k][l] = p;
     out.point_b[k][l] = q;
   }
-  out.converged_at[l] = converged_at;
+  out.converged_at[l] = static_cast<int>(first_converged <= Iterations ? first_converged : 0.0);
 }
 
 // Second vectorised pass: the bounds. Split from penalty_lane because sqrt, which may set
