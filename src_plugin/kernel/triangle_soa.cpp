@@ -29,13 +29,17 @@ void transform_soa(const TriangleSoA &body, const Eigen::Matrix3d &rotation,
   world.distinct = body.distinct;
   const double *bx = body.x.data(), *by = body.y.data(), *bz = body.z.data();
   double *wx = world.x.data(), *wy = world.y.data(), *wz = world.z.data();
-  const Eigen::Matrix3d &r = rotation;
-  const Eigen::Vector3d &t = translation;
+  // The coefficients as locals: read through the references, g++ reloaded and broadcast all
+  // twelve every iteration (a store to `world` might have changed them).
+  const double r00 = rotation(0, 0), r01 = rotation(0, 1), r02 = rotation(0, 2);
+  const double r10 = rotation(1, 0), r11 = rotation(1, 1), r12 = rotation(1, 2);
+  const double r20 = rotation(2, 0), r21 = rotation(2, 1), r22 = rotation(2, 2);
+  const double tx = translation.x(), ty = translation.y(), tz = translation.z();
 #pragma omp simd
   for (std::size_t i = 0; i < n; ++i) {
-    wx[i] = r(0, 0) * bx[i] + r(0, 1) * by[i] + r(0, 2) * bz[i] + t.x();
-    wy[i] = r(1, 0) * bx[i] + r(1, 1) * by[i] + r(1, 2) * bz[i] + t.y();
-    wz[i] = r(2, 0) * bx[i] + r(2, 1) * by[i] + r(2, 2) * bz[i] + t.z();
+    wx[i] = r00 * bx[i] + r01 * by[i] + r02 * bz[i] + tx;
+    wy[i] = r10 * bx[i] + r11 * by[i] + r12 * bz[i] + ty;
+    wz[i] = r20 * bx[i] + r21 * by[i] + r22 * bz[i] + tz;
   }
 }
 
