@@ -104,8 +104,8 @@ TRI_LANE void penalty_lane(const double (*c)[kPairLanes], int l, double weight, 
   out.converged_at[l] = static_cast<int>(first_converged <= Iterations ? first_converged : 0.0);
 }
 
-// Second vectorised pass: the bounds. Split from penalty_lane because sqrt, which may set
-// errno, cannot be vectorised; the 8 square roots run in a plain loop in between.
+// Second vectorised pass: the bounds, after the lanes' distances |q - p| (a loop of their own,
+// vectorised since tri_kernel builds with -fno-math-errno).
 TRI_LANE void bounds_lane(const double (*c)[kPairLanes], int l, PenaltyBlockResult &out) {
   double diff[3], n[3];
 #pragma GCC unroll 3
