@@ -172,6 +172,9 @@ PairForceResult resume_after_kernel(const Body &a, const Body &b, const Interact
   if (origin.keep)
     cache.candidates->keep(&a.pose, *a.triangles, b.is_wall() ? nullptr : &b.pose, *b.triangles,
                            cutoff, origin.reach, job.pairs, job.count, results);
+  else if (origin.pairs_offset < 0) // a kept list's
+    cache.candidates->rebase(&a.pose, *a.triangles, b.is_wall() ? nullptr : &b.pose,
+                             *b.triangles, results, job.skip_from);
   return after_kernel(a, b, s, dt, history, scratch, cache, results, job.count);
 }
 
@@ -274,16 +277,21 @@ PairForceResult body_interaction(const Body &a, const Body &b, const Interaction
     ++stats.candidates_kept;
     if (cache.update)
       cache.candidates->note_use();
+    // The kernel skips the kept pairs the motion cannot have brought within the cutoff.
+    CandidateCache &kc = *cache.candidates;
+    const double skip = kc.skip_from(pose_a, *a.triangles, pose_b, *b.triangles, cutoff);
     if (scratch.defer && can_queue_candidates(s.distance)) {
-      scratch.jobs.push_back(queue_candidates(
-          *a.triangles, a.reach_epsilon(b), *b.triangles, b.reach_epsilon(a), s.distance,
-          cache.candidates->pairs(), cache.candidates->count(), stats));
+      scratch.jobs.push_back(queue_candidates(*a.triangles, a.reach_epsilon(b), *b.triangles,
+                                              b.reach_epsilon(a), s.distance, kc.pairs(),
+                                              kc.count(), stats, kc.lower_bounds(), skip));
       scratch.job_origins.push_back({});
       return PairForceResult{};
     }
     contacts_among_candidates(*a.triangles, a.reach_epsilon(b), *b.triangles, b.reach_epsilon(a),
-                              s.distance, cache.candidates->pairs(), cache.candidates->count(),
-                              scratch.triangle_contacts, stats, scratch.distance);
+                              s.distance, kc.pairs(), kc.count(), scratch.triangle_contacts,
+                              stats, scratch.distance, kc.lower_bounds(), skip);
+    kc.rebase(pose_a, *a.triangles, pose_b, *b.triangles, scratch.distance.results.data(),
+              can_queue_candidates(s.distance) ? skip : std::numeric_limits<double>::infinity());
   } else {
     const bool keep = coherent && cache.update && cache.candidates->worth_keeping();
     const double reach = keep ? candidate_reach(a, b, s.coherence, cutoff, dt) : 0.0;

@@ -73,6 +73,27 @@ bool CandidateCache::covers(const RigidPose *pose_a, const TriangleSoA &a, const
   return moved(a_, pose_a, a, b_, pose_b, b, cutoff + reach_) < reach_;
 }
 
+double CandidateCache::skip_from(const RigidPose *pose_a, const TriangleSoA &a,
+                                 const RigidPose *pose_b, const TriangleSoA &b, double cutoff) {
+  base_motion_ = moved(base_a_, pose_a, a, base_b_, pose_b, b, cutoff + reach_);
+  return std::isfinite(base_motion_) ? cutoff + base_motion_
+                                     : std::numeric_limits<double>::infinity();
+}
+
+void CandidateCache::rebase(const RigidPose *pose_a, const TriangleSoA &a, const RigidPose *pose_b,
+                            const TriangleSoA &b, const TrianglePairDistance *results,
+                            double skip) {
+  for (std::size_t k = 0; k < lower_.size(); ++k) {
+    if (lower_[k] >= skip && std::isfinite(skip)) // skipped (base_motion_ is finite)
+      lower_[k] -= base_motion_;
+    else
+      lower_[k] = results[k].lower_bound;
+  }
+  record(pose_a, a, base_a_);
+  record(pose_b, b, base_b_);
+  base_motion_ = 0.0;
+}
+
 bool CandidateCache::worth_keeping() {
   if (valid_ && uses_ == 0) {
     pause_ = kPausedSearches;
@@ -122,22 +143,30 @@ void CandidateCache::keep(const RigidPose *pose_a, const TriangleSoA &a, const R
   cutoff_ = cutoff;
   reach_ = reach;
   uses_ = 0;
+  base_a_ = a_;
+  base_b_ = b_;
+  base_motion_ = 0.0;
+  pairs_.clear();
+  lower_.clear();
   if (!results) {
     pairs_.assign(pairs, pairs + count);
+    lower_.assign(pairs_.size(), -std::numeric_limits<double>::infinity());
   } else {
     // The slack of `moved` for no motion: the rounding of the coordinates.
     const double beyond = cutoff + reach + moved(a_, pose_a, a, b_, pose_b, b, cutoff + reach);
-    pairs_.clear();
     for (int k = 0; k < count; ++k)
-      if (!(results[k].lower_bound >= beyond))
+      if (!(results[k].lower_bound >= beyond)) {
         pairs_.push_back(pairs[k]);
+        lower_.push_back(results[k].lower_bound);
+      }
   }
   valid_ = true;
 }
 
 std::size_t CandidateCache::bytes() const {
-  return pairs_.capacity() * sizeof(TrianglePairIndex) +
-         (a_.vertices.capacity() + b_.vertices.capacity() + gap_a_.vertices.capacity() +
+  return pairs_.capacity() * sizeof(TrianglePairIndex) + lower_.capacity() * sizeof(double) +
+         (a_.vertices.capacity() + b_.vertices.capacity() + base_a_.vertices.capacity() +
+          base_b_.vertices.capacity() + gap_a_.vertices.capacity() +
           gap_b_.vertices.capacity()) *
              sizeof(double);
 }

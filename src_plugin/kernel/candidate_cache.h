@@ -25,6 +25,17 @@
 // the coordinates; the slack, kSeparationSlackRatio (separating_axis.h) times the magnitudes,
 // is orders of magnitude above them.
 //
+// The same bound thins the list from step to step. Each kept pair carries a lower bound l on
+// its distance at reference poses of the bodies: its certified lower bound from the distance
+// kernel (distance_kernels.h) when it last ran. Its distance now is at least l - D', D' the
+// motion since those poses (the bound above, slack included), so a pair with
+// l >= cutoff + D' (skip_from) cannot be in contact, and the kernel skips it (HybridJob::lower).
+// After the kernel, rebase() moves every bound to the current poses: a pair that ran takes its
+// new lower bound, a skipped one l - D'. So a pair just beyond the cutoff runs again only once
+// the motion since it last ran could have closed its margin, not every step the list is used:
+// in the formed hopper 46 % of the kept pairs a step were beyond the cutoff, in the settled
+// pile 29 %. The contacts are the same, in the same order: a skipped pair is not one.
+//
 // The same bound keeps a proof of separation: a gap g proven between the bodies along a unit
 // separating axis n (from a towards b, separating_axis.h) is g = min_b n.q - max_a n.p. A
 // vertex of a rigid particle moves by (x - x0) + (R - R0) p, so its projection on n changes by
@@ -73,6 +84,20 @@ public:
   bool covers(const RigidPose *pose_a, const TriangleSoA &a, const RigidPose *pose_b,
               const TriangleSoA &b, double cutoff) const;
 
+  // The kept pairs, and per pair a lower bound on its distance at the reference poses (header).
+  const TrianglePairIndex *pairs() const { return pairs_.data(); }
+  const double *lower_bounds() const { return lower_.data(); }
+  int count() const { return static_cast<int>(pairs_.size()); }
+  // Once covers() holds: the bound from which on a kept pair cannot be within `cutoff` now,
+  // cutoff plus the motion since the reference poses (+infinity: that motion is not bounded).
+  double skip_from(const RigidPose *pose_a, const TriangleSoA &a, const RigidPose *pose_b,
+                   const TriangleSoA &b, double cutoff);
+  // After the distance kernel ran on the kept pairs but those whose bound is at least `skip`
+  // (skip_from's, or +infinity: none skipped), results[k] pair k's: moves the bounds to the
+  // current poses (header). A skipped pair's result is not read.
+  void rebase(const RigidPose *pose_a, const TriangleSoA &a, const RigidPose *pose_b,
+              const TriangleSoA &b, const TrianglePairDistance *results, double skip);
+
   // Keeps pairs[0, count), found with margin cutoff + reach, and the bodies' poses now; with
   // `results` (the distance kernel's on those pairs), only the pairs whose certified lower
   // bound is below cutoff + reach (plus the rounding slack): the others cannot come within the
@@ -109,8 +134,6 @@ public:
     for (std::size_t offset = 0; offset < sizeof(*this); offset += 64)
       __builtin_prefetch(p + offset);
   }
-  const TrianglePairIndex *pairs() const { return pairs_.data(); }
-  int count() const { return static_cast<int>(pairs_.size()); }
   std::size_t bytes() const; // heap memory held
 
 private:
@@ -144,6 +167,9 @@ private:
   Eigen::Vector3d gap_axis_ = Eigen::Vector3d::Zero(); // unit, a towards b; zero: not known
   Pose gap_a_, gap_b_;
   std::vector<TrianglePairIndex> pairs_;
+  std::vector<double> lower_; // per kept pair: at the poses base_a_, base_b_ (-inf: not known), m
+  Pose base_a_, base_b_;
+  double base_motion_ = 0.0; // the motion since then, as skip_from bounded it
 };
 
 } // namespace tri

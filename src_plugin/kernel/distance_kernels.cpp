@@ -8,6 +8,7 @@
 namespace tri {
 
 HybridCounters &HybridCounters::operator+=(const HybridCounters &o) {
+  triangle_pairs_tested += o.triangle_pairs_tested;
   penalty_pairs += o.penalty_pairs;
   fallbacks += o.fallbacks;
   retries += o.retries;
@@ -339,6 +340,9 @@ void prefetch_list(const HybridJob &job) {
   const std::size_t bytes = static_cast<std::size_t>(job.count) * sizeof(TrianglePairIndex);
   for (std::size_t offset = 0; offset < bytes; offset += 64)
     __builtin_prefetch(p + offset);
+  const char *q = reinterpret_cast<const char *>(job.lower);
+  for (std::size_t offset = 0; q && offset < 2 * bytes; offset += 64)
+    __builtin_prefetch(q + offset);
 }
 void prefetch_triangles(const HybridJob &job) {
   for (int k = 0; k < job.count; ++k) {
@@ -368,8 +372,22 @@ void hybrid_distances_jobs(const HybridJob *jobs, int num_jobs, HybridCounters &
       prefetch_list(jobs[j + 4]);
     if (j + 3 < num_jobs)
       prefetch_triangles(jobs[j + 3]);
-    for (int k = 0; k < jobs[j].count; ++k)
-      first.add(jobs[j], k);
+    const HybridJob &job = jobs[j];
+    if (job.lower && std::isfinite(job.skip_from)) {
+      long long skipped = 0;
+      for (int k = 0; k < job.count; ++k) {
+        if (job.lower[k] >= job.skip_from) { // cannot be within the cutoff
+          job.out[k].distance = std::numeric_limits<double>::infinity();
+          ++skipped;
+        } else {
+          first.add(job, k);
+        }
+      }
+      counters.triangle_pairs_tested -= skipped;
+    } else {
+      for (int k = 0; k < job.count; ++k)
+        first.add(job, k);
+    }
   }
   first.flush(); // before `again`, which it may add to, and `pending` (its destructor)
   again.flush();

@@ -12,6 +12,8 @@
 // decision does depend on the batch, so callers split it at batch boundaries only.)
 #pragma once
 
+#include <limits>
+
 #include "penalty_distance.h"
 #include "triangle_distance.h"
 #include "triangle_soa.h"
@@ -48,6 +50,7 @@ struct HybridSettings {
 // Newton histogram and fallbacks; values summed by the caller. ContactStats
 // (particle_contacts.h) extends this with the culling counters.
 struct HybridCounters {
+  long long triangle_pairs_tested = 0; // pairs given to the distance kernel
   long long penalty_pairs = 0; // pairs run through the penalty
   long long fallbacks = 0;     // pairs recomputed by brute force
   long long retries = 0;       // pairs run a second time (retry_iterations), not in the histogram
@@ -99,6 +102,11 @@ struct HybridJob {
   int count;
   HybridSettings settings;
   TrianglePairDistance *out;       // [0, count)
+  // Optional, [0, count): a lower bound on each pair's distance (kept candidates,
+  // candidate_cache.h). A pair whose bound is at least `skip_from` (finite) is not run: its
+  // result is only distance = +infinity, and it is taken back from triangle_pairs_tested.
+  const double *lower = nullptr;
+  double skip_from = std::numeric_limits<double>::infinity();
 };
 void hybrid_distances_jobs(const HybridJob *jobs, int num_jobs, HybridCounters &counters);
 

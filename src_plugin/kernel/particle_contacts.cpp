@@ -17,7 +17,6 @@
 namespace tri {
 
 ContactStats &ContactStats::operator+=(const ContactStats &o) {
-  triangle_pairs_tested += o.triangle_pairs_tested;
   triangle_pairs_culled += o.triangle_pairs_culled;
   contacts += o.contacts;
   bodies_separated += o.bodies_separated;
@@ -170,7 +169,7 @@ void contacts_among_candidates(const TriangleSoA &a, double eps_a, const Triangl
                                double eps_b, const ContactOptions &opt,
                                const TrianglePairIndex *pairs, int count,
                                std::vector<TriangleContact> &out, ContactStats &stats,
-                               ContactWorkspace &ws) {
+                               ContactWorkspace &ws, const double *lower, double skip_from) {
   check_options(opt);
   const double cutoff = eps_a + eps_b;
   ws.tested = count;
@@ -186,7 +185,12 @@ void contacts_among_candidates(const TriangleSoA &a, double eps_a, const Triangl
   const int unit = opt.kernel == DistanceKernel::BatchedHybrid ? opt.batch_size : kPairLanes;
   switch (opt.parallel) {
   case ContactParallelism::None:
-    run_kernel(a, b, opt, hs, pairs, results, 0, count, counters);
+    if (lower && can_queue_candidates(opt)) { // the one job queue_candidates would make
+      const HybridJob job{&a, &b, pairs, count, hs, results, lower, skip_from};
+      hybrid_distances_jobs(&job, 1, counters);
+    } else {
+      run_kernel(a, b, opt, hs, pairs, results, 0, count, counters);
+    }
     break;
   case ContactParallelism::TrianglePairs: {
     const int units = (count + unit - 1) / unit;
@@ -234,12 +238,13 @@ bool can_queue_candidates(const ContactOptions &opt) {
 
 HybridJob queue_candidates(const TriangleSoA &a, double eps_a, const TriangleSoA &b, double eps_b,
                            const ContactOptions &opt, const TrianglePairIndex *pairs, int count,
-                           ContactStats &stats) {
+                           ContactStats &stats, const double *lower, double skip_from) {
   check_options(opt);
   stats.triangle_pairs_tested += count;
   stats.triangle_pairs_culled +=
       static_cast<long long>(a.num_triangles()) * b.num_triangles() - count;
-  return HybridJob{&a, &b, pairs, count, hybrid_settings(opt, eps_a, eps_b), nullptr};
+  return HybridJob{&a, &b, pairs, count, hybrid_settings(opt, eps_a, eps_b), nullptr, lower,
+                   skip_from};
 }
 
 void contacts_from_results(const TrianglePairIndex *pairs, const TrianglePairDistance *results,

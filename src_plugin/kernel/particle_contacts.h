@@ -86,8 +86,7 @@ struct TriangleContact {            // one triangle pair closer than eps_a + eps
 // Values for one or more calls, summed by the caller; no globals. The penalty counters
 // (penalty_pairs, fallbacks, newton_histogram) are the distance kernels' own (HybridCounters);
 // what compute tri/stats reports of them is listed in interaction_tally.h.
-struct ContactStats : HybridCounters {
-  long long triangle_pairs_tested = 0; // pairs given to the distance kernel
+struct ContactStats : HybridCounters { // triangle_pairs_tested among HybridCounters'
   long long triangle_pairs_culled = 0; // pairs removed by the box cull
   long long contacts = 0;              // pairs reported
   long long bodies_separated = 0;      // body pairs proven apart without a search (a kept
@@ -130,7 +129,9 @@ void find_triangle_contacts(const TriangleSoA &a, double eps_a, const TriangleSo
 // in row-major (tri_a, tri_b) order. contacts_among_candidates runs the distance kernel on
 // pairs[0, count) (row-major order, any superset of the pairs closer than eps_a + eps_b) and
 // appends those closer than eps_a + eps_b: each pair's result does not depend on the other
-// pairs in the list, so the contacts are the call above's, bit for bit.
+// pairs in the list, so the contacts are the call above's, bit for bit. `lower`, `skip_from`
+// (optional): lower bounds on the pairs' distances, as HybridJob's (the hybrid kernel without
+// threads inside the pair skips the pairs they rule out; the other kernels run every pair).
 int find_candidate_pairs(const TriangleSoA &a, const TriangleSoA &b, double margin,
                          const ContactOptions &opt, ContactWorkspace &ws,
                          const std::uint8_t *skip_b = nullptr);
@@ -138,7 +139,8 @@ void contacts_among_candidates(const TriangleSoA &a, double eps_a, const Triangl
                                double eps_b, const ContactOptions &opt,
                                const TrianglePairIndex *pairs, int count,
                                std::vector<TriangleContact> &out, ContactStats &stats,
-                               ContactWorkspace &ws);
+                               ContactWorkspace &ws, const double *lower = nullptr,
+                               double skip_from = std::numeric_limits<double>::infinity());
 
 // contacts_among_candidates in two halves, for callers that run the kernels of many body pairs
 // together (hybrid_distances_jobs, interaction_engine.h): queue_candidates counts the pairs in
@@ -152,7 +154,8 @@ bool can_queue_candidates(const ContactOptions &opt);
 double certified_tolerance(const ContactOptions &opt, double eps_a, double eps_b);
 HybridJob queue_candidates(const TriangleSoA &a, double eps_a, const TriangleSoA &b, double eps_b,
                            const ContactOptions &opt, const TrianglePairIndex *pairs, int count,
-                           ContactStats &stats);
+                           ContactStats &stats, const double *lower = nullptr,
+                           double skip_from = std::numeric_limits<double>::infinity());
 void contacts_from_results(const TrianglePairIndex *pairs, const TrianglePairDistance *results,
                            int count, double cutoff, std::vector<TriangleContact> &out,
                            ContactStats &stats);

@@ -84,6 +84,80 @@ TEST(CandidateCache, MotionBoundAtTheEdgeOfTheReach) {
   EXPECT_FALSE(cache.covers(&undescribed, w, &p, w, 2e-4));
 }
 
+// Per-pair bounds (candidate_cache.h): a kept pair whose lower bound lies beyond the cutoff by
+// more than the motion since its reference pose is skipped; rebase() moves the bounds to the
+// new pose (a pair that ran takes its result's bound, a skipped one loses the motion), so a
+// pair is skipped until the motion since it last ran could have closed its margin, and never
+// once its bound is unknown (a kept list without results) or the motion is unbounded.
+TEST(CandidateCache, KeptPairsAreSkippedWhileTheMotionCannotBringThemWithinTheCutoff) {
+  const double cutoff = 2e-4, reach = 1e-4, r = 0.002;
+  const Shape s = rock(20, 7);
+  TriangleSoA wa, wb;
+  RigidPose pa, pb;
+  pa.radius = pb.radius = r;
+  pb.x = Vector3d(0.0, 0.0, 0.004);
+  transform_soa(s.soa, Eigen::Matrix3d::Identity(), pa.x, wa);
+  transform_soa(s.soa, Eigen::Matrix3d::Identity(), pb.x, wb);
+  const TrianglePairIndex pairs[4] = {{0, 0}, {0, 1}, {1, 0}, {1, 1}};
+  TrianglePairDistance results[4];
+  const double lower[4] = {0.5 * cutoff, cutoff + 0.2 * reach, cutoff + 0.6 * reach,
+                           cutoff + 2.0 * reach}; // the last: beyond the list's reach
+  for (int k = 0; k < 4; ++k)
+    results[k].lower_bound = lower[k];
+  CandidateCache cache;
+  cache.keep(&pa, wa, &pb, wb, cutoff, reach, pairs, 4, results);
+  ASSERT_EQ(cache.count(), 3);
+  auto skipped = [&](double skip) {
+    std::vector<int> out;
+    for (int k = 0; k < cache.count(); ++k)
+      if (cache.lower_bounds()[k] >= skip)
+        out.push_back(k);
+    return out;
+  };
+  // No motion: only the rounding slack; pairs 1 and 2 are beyond the cutoff.
+  double skip = cache.skip_from(&pa, wa, &pb, wb, cutoff);
+  EXPECT_GT(skip, cutoff);
+  EXPECT_LT(skip, cutoff * (1 + 1e-6));
+  EXPECT_EQ(skipped(skip), (std::vector<int>{1, 2}));
+  // a moves 0.3 reach towards b: pair 1 (0.2 reach beyond) may now be within the cutoff.
+  RigidPose moved = pa;
+  moved.x.z() += 0.3 * reach;
+  skip = cache.skip_from(&moved, wa, &pb, wb, cutoff);
+  EXPECT_NEAR(skip, cutoff + 0.3 * reach, 1e-7 * cutoff); // slack: 1e-9 of the coordinates
+  EXPECT_EQ(skipped(skip), (std::vector<int>{2}));
+  // The kernel ran on pairs 0 and 1 (new bounds below), skipped pair 2: its bound loses the
+  // 0.3 reach, the others take their results'.
+  results[0].lower_bound = 0.4 * cutoff;
+  results[1].lower_bound = cutoff + 0.25 * reach;
+  results[2].lower_bound = std::numeric_limits<double>::quiet_NaN(); // skipped: not read
+  cache.rebase(&moved, wa, &pb, wb, results, skip);
+  EXPECT_EQ(cache.lower_bounds()[0], 0.4 * cutoff);
+  EXPECT_EQ(cache.lower_bounds()[1], cutoff + 0.25 * reach);
+  EXPECT_NEAR(cache.lower_bounds()[2], cutoff + 0.3 * reach, 1e-7 * cutoff);
+  // From the new reference pose, a further 0.2 reach: pair 1 (0.25 beyond) and pair 2 (0.3
+  // beyond) are still skipped; 0.28 reach: pair 1 runs, pair 2 does not.
+  RigidPose further = moved;
+  further.x.z() += 0.2 * reach;
+  ASSERT_TRUE(cache.covers(&further, wa, &pb, wb, cutoff)); // 0.5 reach since the keep
+  EXPECT_EQ(skipped(cache.skip_from(&further, wa, &pb, wb, cutoff)), (std::vector<int>{1, 2}));
+  further.x.z() = moved.x.z() + 0.28 * reach;
+  EXPECT_EQ(skipped(cache.skip_from(&further, wa, &pb, wb, cutoff)), (std::vector<int>{2}));
+  // A rotation counts with the radius: 2 sin(angle / 2) r = 0.28 reach, likewise.
+  RigidPose turned = moved;
+  turned.q = Eigen::Quaterniond(Eigen::AngleAxisd(2.0 * std::asin(0.14 * reach / r),
+                                                  Vector3d(1, 2, 3).normalized()));
+  EXPECT_EQ(skipped(cache.skip_from(&turned, wa, &pb, wb, cutoff)), (std::vector<int>{2}));
+  // An unbounded motion (another radius) skips nothing and rebases nothing it cannot bound.
+  RigidPose unknown = moved;
+  unknown.radius = 2 * r;
+  skip = cache.skip_from(&unknown, wa, &pb, wb, cutoff);
+  EXPECT_EQ(skip, std::numeric_limits<double>::infinity());
+  EXPECT_TRUE(skipped(skip).empty());
+  // A list kept without results knows no bound: every pair runs.
+  cache.keep(&pa, wa, &pb, wb, cutoff, reach, pairs, 4);
+  EXPECT_TRUE(skipped(cache.skip_from(&pa, wa, &pb, wb, cutoff)).empty());
+}
+
 // A wall patch is compared vertex by vertex: a moved vertex beyond the reach, or a patch that
 // gained a triangle, is not covered; a kept gap proves the bodies apart only while the motion
 // cannot have closed it.
@@ -157,7 +231,7 @@ TEST(CandidateCache, WallPatchByItsVerticesAndKeptGaps) {
 // what was kept.
 TEST(CandidateCache, KeptCandidatesChangeNothingOnMovingRotatingPairs) {
   const double eps = 1e-4, dt = 1e-5;
-  long long kept_steps = 0, separated = 0, touching = 0, searched = 0;
+  long long kept_steps = 0, separated = 0, touching = 0, searched = 0, listed = 0, ran = 0;
   for (int pair = 0; pair < 4; ++pair) {
     const RockPairPath path(rock(pair % 2 ? 40 : 20, 11 + pair),
                             rock(pair / 2 ? 40 : 20, 21 + pair), 700 + pair);
@@ -183,6 +257,10 @@ TEST(CandidateCache, KeptCandidatesChangeNothingOnMovingRotatingPairs) {
       ASSERT_NO_FATAL_FAILURE(expect_bitwise(ref, got, what));
       ASSERT_NO_FATAL_FAILURE(expect_same_history(h_ref, h_got, what));
       kept_steps += st_got.candidates_kept;
+      if (st_got.candidates_kept > 0) { // the kept list's pairs, and those the kernel ran
+        listed += cache.count();
+        ran += st_got.triangle_pairs_tested;
+      }
       separated += st_got.bodies_separated;
       touching += ref.contacts_after > 0;
       if (st_got.bodies_separated == 0) {
@@ -197,6 +275,9 @@ TEST(CandidateCache, KeptCandidatesChangeNothingOnMovingRotatingPairs) {
   EXPECT_GT(touching, 1000);  // the trajectories do touch (1148) ...
   EXPECT_GT(kept_steps, 900); // ... and the kept candidates do most searches (1063 of 1232)
   EXPECT_GT(separated, 5000); // kept gaps and axes the rest (6768 of 8000 steps)
+  // The kernel skips kept pairs the motion cannot have brought within the cutoff.
+  std::printf("kept lists: %lld pairs listed, %lld run\n", listed, ran);
+  EXPECT_LT(ran, 0.9 * listed); // 32717 of 38023: these bodies move a few um a step
 }
 
 // A spinning rock sliding and bouncing on a patch of four wall triangles, one sloping: kept
