@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 using namespace tri;
 using namespace tri_test;
 
@@ -182,6 +184,63 @@ TEST(Hybrid, JobsRunTogetherGiveEachJobsOwnResults) {
   EXPECT_EQ(sum_together.fallbacks, sum_alone.fallbacks);
   for (int k = 0; k <= kMaxPenaltyIterations; ++k)
     EXPECT_EQ(sum_together.newton_histogram[k], sum_alone.newton_histogram[k]);
+}
+
+// Jobs with lower bounds (kept candidates, candidate_cache.h): a pair whose bound is at least
+// skip_from is not run (its result: distance +inf, triangle_pairs_tested one less, no penalty
+// or fallback counted); every other pair's result is bitwise that of the job without bounds,
+// wherever the skipped pairs sat among its lanes. No bound, or skip_from infinite: nothing is
+// skipped.
+TEST(Hybrid, JobsSkipThePairsTheirLowerBoundsRuleOut) {
+  const PairSet s = make_set(1e-3, 48);
+  const int n = static_cast<int>(s.pairs.size());
+  HybridSettings hs;
+  hs.tolerance = 1e-10;
+  hs.cutoff = 0.0437e-3;
+  hs.retry_iterations = 8;
+  std::vector<TrianglePairDistance> plain(n), skipping(n), unbounded(n);
+  HybridCounters c_plain, c_skip, c_unbounded;
+  const HybridJob job{&s.a, &s.b, s.pairs.data(), n, hs, plain.data()};
+  hybrid_distances_jobs(&job, 1, c_plain);
+  // Bounds: every third pair well beyond skip_from, the others below it (one exactly at it is
+  // skipped: the bound rules it out).
+  const double skip_from = 0.05e-3;
+  std::vector<double> lower(n);
+  int expect_skipped = 0;
+  for (int k = 0; k < n; ++k) {
+    lower[k] = k % 3 == 0 ? 2 * skip_from : (k % 3 == 1 ? 0.0 : 0.5 * skip_from);
+    if (k == 7)
+      lower[k] = skip_from;
+    expect_skipped += lower[k] >= skip_from;
+  }
+  HybridJob with = job;
+  with.out = skipping.data();
+  with.lower = lower.data();
+  with.skip_from = skip_from;
+  hybrid_distances_jobs(&with, 1, c_skip);
+  for (int k = 0; k < n; ++k) {
+    if (lower[k] >= skip_from) {
+      ASSERT_EQ(skipping[k].distance, std::numeric_limits<double>::infinity()) << s.names[k];
+      continue;
+    }
+    ASSERT_EQ(skipping[k].distance, plain[k].distance) << s.names[k];
+    ASSERT_EQ(skipping[k].lower_bound, plain[k].lower_bound) << s.names[k];
+    ASSERT_EQ(skipping[k].point_a, plain[k].point_a) << s.names[k];
+    ASSERT_EQ(skipping[k].point_b, plain[k].point_b) << s.names[k];
+    ASSERT_EQ(skipping[k].intersecting, plain[k].intersecting) << s.names[k];
+  }
+  EXPECT_EQ(c_plain.triangle_pairs_tested, 0); // counted where a job is queued, not here
+  EXPECT_EQ(c_skip.triangle_pairs_tested, -expect_skipped);
+  EXPECT_EQ(c_skip.penalty_pairs, n - expect_skipped);
+  EXPECT_LT(c_skip.fallbacks + c_skip.retries, c_plain.fallbacks + c_plain.retries);
+  HybridJob infinite = with;
+  infinite.out = unbounded.data();
+  infinite.skip_from = std::numeric_limits<double>::infinity();
+  hybrid_distances_jobs(&infinite, 1, c_unbounded);
+  for (int k = 0; k < n; ++k)
+    ASSERT_EQ(unbounded[k].distance, plain[k].distance) << s.names[k];
+  EXPECT_EQ(c_unbounded.triangle_pairs_tested, 0);
+  EXPECT_EQ(c_unbounded.penalty_pairs, c_plain.penalty_pairs);
 }
 
 TEST(Penalty, AloneIsCloseButUnchecked) {
