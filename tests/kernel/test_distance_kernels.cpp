@@ -30,6 +30,16 @@ PairSet make_set(double scale, std::uint64_t seed) {
   return s;
 }
 
+// The job tests' settings (millimetre triangles): a cutoff the random pairs spread across, and
+// the retry, as in the simulations.
+HybridSettings job_settings() {
+  HybridSettings hs;
+  hs.tolerance = 1e-10;
+  hs.cutoff = 0.0437e-3;
+  hs.retry_iterations = 8;
+  return hs;
+}
+
 } // namespace
 
 class HybridAtScale : public ::testing::TestWithParam<double> {};
@@ -144,10 +154,7 @@ TEST_P(HybridAtScale, RetryKeepsBruteForcesAnswersWithFewerFallbacks) {
 TEST(Hybrid, JobsRunTogetherGiveEachJobsOwnResults) {
   const PairSet s = make_set(1e-3, 47);
   const int n = static_cast<int>(s.pairs.size());
-  HybridSettings base;
-  base.tolerance = 1e-10;
-  base.cutoff = 0.0437e-3;
-  base.retry_iterations = 8;
+  const HybridSettings base = job_settings();
   std::vector<HybridJob> jobs;
   std::vector<TrianglePairDistance> together(n), alone(n);
   HybridCounters sum_alone;
@@ -194,10 +201,7 @@ TEST(Hybrid, JobsRunTogetherGiveEachJobsOwnResults) {
 TEST(Hybrid, JobsSkipThePairsTheirLowerBoundsRuleOut) {
   const PairSet s = make_set(1e-3, 48);
   const int n = static_cast<int>(s.pairs.size());
-  HybridSettings hs;
-  hs.tolerance = 1e-10;
-  hs.cutoff = 0.0437e-3;
-  hs.retry_iterations = 8;
+  const HybridSettings hs = job_settings();
   std::vector<TrianglePairDistance> plain(n), skipping(n), unbounded(n);
   HybridCounters c_plain, c_skip, c_unbounded;
   const HybridJob job{&s.a, &s.b, s.pairs.data(), n, hs, plain.data()};
