@@ -174,7 +174,7 @@ PairForceResult resume_after_kernel(const Body &a, const Body &b, const Interact
                            cutoff, origin.reach, job.pairs, job.count, results);
   else if (origin.pairs_offset < 0) // a kept list's
     cache.candidates->rebase(&a.pose, *a.triangles, b.is_wall() ? nullptr : &b.pose,
-                             *b.triangles, results, job.skip_from);
+                             *b.triangles, results);
   return after_kernel(a, b, s, dt, history, scratch, cache, results, job.count);
 }
 
@@ -290,8 +290,7 @@ PairForceResult body_interaction(const Body &a, const Body &b, const Interaction
     contacts_among_candidates(*a.triangles, a.reach_epsilon(b), *b.triangles, b.reach_epsilon(a),
                               s.distance, kc.pairs(), kc.count(), scratch.triangle_contacts,
                               stats, scratch.distance, kc.lower_bounds(), skip);
-    kc.rebase(pose_a, *a.triangles, pose_b, *b.triangles, scratch.distance.results.data(),
-              can_queue_candidates(s.distance) ? skip : std::numeric_limits<double>::infinity());
+    kc.rebase(pose_a, *a.triangles, pose_b, *b.triangles, scratch.distance.results.data());
   } else {
     const bool keep = coherent && cache.update && cache.candidates->worth_keeping();
     const double reach = keep ? candidate_reach(a, b, s.coherence, cutoff, dt) : 0.0;

@@ -81,14 +81,14 @@ double CandidateCache::skip_from(const RigidPose *pose_a, const TriangleSoA &a,
 }
 
 void CandidateCache::rebase(const RigidPose *pose_a, const TriangleSoA &a, const RigidPose *pose_b,
-                            const TriangleSoA &b, const TrianglePairDistance *results,
-                            double skip) {
-  for (std::size_t k = 0; k < lower_.size(); ++k) {
-    if (lower_[k] >= skip && std::isfinite(skip)) // skipped (base_motion_ is finite)
-      lower_[k] -= base_motion_;
-    else
-      lower_[k] = results[k].lower_bound;
-  }
+                            const TriangleSoA &b, const TrianglePairDistance *results) {
+  // A skipped pair keeps its bound less the motion: a bound for any pair, had it run or not.
+  const double shift =
+      std::isfinite(base_motion_) ? base_motion_ : std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < lower_.size(); ++k)
+    lower_[k] = results[k].distance == std::numeric_limits<double>::infinity()
+                    ? lower_[k] - shift
+                    : results[k].lower_bound;
   record(pose_a, a, base_a_);
   record(pose_b, b, base_b_);
   base_motion_ = 0.0;

@@ -92,11 +92,12 @@ public:
   // cutoff plus the motion since the reference poses (+infinity: that motion is not bounded).
   double skip_from(const RigidPose *pose_a, const TriangleSoA &a, const RigidPose *pose_b,
                    const TriangleSoA &b, double cutoff);
-  // After the distance kernel ran on the kept pairs but those whose bound is at least `skip`
-  // (skip_from's, or +infinity: none skipped), results[k] pair k's: moves the bounds to the
-  // current poses (header). A skipped pair's result is not read.
+  // After the distance kernel ran on the kept pairs (results[k] pair k's), moves the bounds to
+  // the current poses (header). A pair the kernel skipped is told by its distance, +infinity
+  // (HybridJob::lower); its other fields are not read. Whichever kernel ran, and whatever it
+  // skipped, every bound stays a bound.
   void rebase(const RigidPose *pose_a, const TriangleSoA &a, const RigidPose *pose_b,
-              const TriangleSoA &b, const TrianglePairDistance *results, double skip);
+              const TriangleSoA &b, const TrianglePairDistance *results);
 
   // Keeps pairs[0, count), found with margin cutoff + reach, and the bodies' poses now; with
   // `results` (the distance kernel's on those pairs), only the pairs whose certified lower

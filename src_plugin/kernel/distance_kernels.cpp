@@ -341,7 +341,8 @@ void prefetch_list(const HybridJob &job) {
   for (std::size_t offset = 0; offset < bytes; offset += 64)
     __builtin_prefetch(p + offset);
   const char *q = reinterpret_cast<const char *>(job.lower);
-  for (std::size_t offset = 0; q && offset < 2 * bytes; offset += 64)
+  const std::size_t lower_bytes = static_cast<std::size_t>(job.count) * sizeof(double);
+  for (std::size_t offset = 0; q && offset < lower_bytes; offset += 64)
     __builtin_prefetch(q + offset);
 }
 void prefetch_triangles(const HybridJob &job) {
@@ -373,20 +374,14 @@ void hybrid_distances_jobs(const HybridJob *jobs, int num_jobs, HybridCounters &
     if (j + 3 < num_jobs)
       prefetch_triangles(jobs[j + 3]);
     const HybridJob &job = jobs[j];
-    if (job.lower && std::isfinite(job.skip_from)) {
-      long long skipped = 0;
-      for (int k = 0; k < job.count; ++k) {
-        if (job.lower[k] >= job.skip_from) { // cannot be within the cutoff
-          job.out[k].distance = std::numeric_limits<double>::infinity();
-          ++skipped;
-        } else {
-          first.add(job, k);
-        }
-      }
-      counters.triangle_pairs_tested -= skipped;
-    } else {
-      for (int k = 0; k < job.count; ++k)
+    const bool bounded = job.lower && std::isfinite(job.skip_from);
+    for (int k = 0; k < job.count; ++k) {
+      if (bounded && job.lower[k] >= job.skip_from) { // cannot be within the cutoff
+        job.out[k].distance = std::numeric_limits<double>::infinity();
+        --counters.triangle_pairs_tested;
+      } else {
         first.add(job, k);
+      }
     }
   }
   first.flush(); // before `again`, which it may add to, and `pending` (its destructor)

@@ -127,10 +127,13 @@ TEST(CandidateCache, KeptPairsAreSkippedWhileTheMotionCannotBringThemWithinTheCu
   EXPECT_EQ(skipped(skip), (std::vector<int>{2}));
   // The kernel ran on pairs 0 and 1 (new bounds below), skipped pair 2: its bound loses the
   // 0.3 reach, the others take their results'.
+  results[0].distance = 0.45 * cutoff; // ran
   results[0].lower_bound = 0.4 * cutoff;
+  results[1].distance = cutoff + 0.3 * reach; // ran
   results[1].lower_bound = cutoff + 0.25 * reach;
-  results[2].lower_bound = std::numeric_limits<double>::quiet_NaN(); // skipped: not read
-  cache.rebase(&moved, wa, &pb, wb, results, skip);
+  results[2].distance = std::numeric_limits<double>::infinity(); // skipped, as the kernel marks it
+  results[2].lower_bound = std::numeric_limits<double>::quiet_NaN(); // not read
+  cache.rebase(&moved, wa, &pb, wb, results);
   EXPECT_EQ(cache.lower_bounds()[0], 0.4 * cutoff);
   EXPECT_EQ(cache.lower_bounds()[1], cutoff + 0.25 * reach);
   EXPECT_NEAR(cache.lower_bounds()[2], cutoff + 0.3 * reach, 1e-7 * cutoff);
