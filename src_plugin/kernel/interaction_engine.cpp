@@ -10,7 +10,9 @@ void InteractionEngine::prepare(std::size_t n, int threads) {
   if (static_cast<int>(deferred_.size()) < threads)
     deferred_.resize(threads);
   thread_stats_.assign(threads, ThreadStats{});
-  results_.assign(n, PairForceResult{});
+  threads_ = threads;
+  // Every task writes its slot (record_failure those that throw): no fill of all of them.
+  results_.resize(n);
   failed_task_ = n;
   failure_.clear();
 }
@@ -44,6 +46,7 @@ long InteractionEngine::take_group(int range, int thread) {
 }
 
 void InteractionEngine::record_failure(std::size_t k, const char *what) {
+  results_[k] = PairForceResult{}; // the task's own slot: no other thread writes it
 #pragma omp critical(tri_engine_failure)
   if (k < failed_task_) {
     failed_task_ = k;
@@ -72,8 +75,10 @@ void InteractionEngine::contribute(int atom, long long partner, const Eigen::Vec
 void InteractionEngine::apply(double **f, double **torque) {
   // The order of a stable sort by (atom, partner): two images of one partner (a periodic box
   // smaller than a particle's reach) keep the order they were contributed in. A counting sort
-  // by atom (stable), then each atom's few contributions by partner (insertion sort, stable):
-  // a comparison sort of the whole list was 6 % of a settled pile's step.
+  // of the contributions' indices by atom (stable), then each atom's few by partner (insertion
+  // sort, stable): a comparison sort of the whole list was 6 % of a settled pile's step. Each
+  // atom's sum is its own, so the atoms are summed on the last run's threads (the sort and the
+  // sums were a twentieth of a settled pile's step, all of it on one thread).
   int atoms = 0;
   for (const Contribution &c : contributions_)
     atoms = std::max(atoms, c.atom + 1);
@@ -86,18 +91,23 @@ void InteractionEngine::apply(double **f, double **torque) {
   {
     std::vector<std::size_t> &next = next_of_atom_;
     next.assign(first_of_atom_.begin(), first_of_atom_.end() - 1);
-    for (const Contribution &c : contributions_)
-      sorted_[next[c.atom]++] = c;
+    for (std::size_t i = 0; i < contributions_.size(); ++i)
+      sorted_[next[contributions_[i].atom]++] = static_cast<std::uint32_t>(i);
   }
+  const Contribution *const from = contributions_.data();
+  std::uint32_t *const order = sorted_.data();
+  const std::size_t *const first = first_of_atom_.data();
+  const int threads = atoms >= kApplyAtomsPerThread * threads_ ? threads_ : 1;
+#pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1)
   for (int a = 0; a < atoms; ++a) {
-    const std::size_t begin = first_of_atom_[a], end = first_of_atom_[a + 1];
+    const std::size_t begin = first[a], end = first[a + 1];
     for (std::size_t i = begin + 1; i < end; ++i)
-      for (std::size_t j = i; j > begin && sorted_[j].partner < sorted_[j - 1].partner; --j)
-        std::swap(sorted_[j], sorted_[j - 1]);
+      for (std::size_t j = i; j > begin && from[order[j]].partner < from[order[j - 1]].partner; --j)
+        std::swap(order[j], order[j - 1]);
     for (std::size_t i = begin; i < end; ++i)
       for (int d = 0; d < 3; ++d) {
-        f[a][d] += sorted_[i].force[d];
-        torque[a][d] += sorted_[i].torque[d];
+        f[a][d] += from[order[i]].force[d];
+        torque[a][d] += from[order[i]].torque[d];
       }
   }
 }
@@ -106,7 +116,7 @@ std::size_t InteractionEngine::bytes() const {
   std::size_t b = results_.capacity() * sizeof(PairForceResult) +
                   contributions_.capacity() * sizeof(Contribution) +
                   thread_stats_.capacity() * sizeof(ThreadStats) +
-                  sorted_.capacity() * sizeof(Contribution) +
+                  sorted_.capacity() * sizeof(std::uint32_t) +
                   (first_of_atom_.capacity() + next_of_atom_.capacity()) * sizeof(std::size_t);
   for (const InteractionScratch &s : scratch_)
     b += sizeof(s) + s.bytes();

@@ -105,7 +105,7 @@ void FixTriWall::init() {
     ntypes = std::max(ntypes, mesh->atomTypeWall());
     wall_types.push_back(mesh->atomTypeWall());
   }
-  materials_.load(lmp, ntypes, settings_.interaction.coefficients, settings_.model,
+  materials_.load(lmp, ntypes, settings_.interaction, settings_.model,
                   particles_->type_bodies().sphere, true, "fix tri/wall");
   board_slot_ = particles_->board().join(id, tri_liggghts::SourceKind::walls);
   tri_liggghts::MaterialHint hint = materials_.hint(atom->ntypes, wall_types);
@@ -230,8 +230,8 @@ tri::PairForceResult FixTriWall::interact(int k, double dt, bool update_history,
   if (task.apart && tri::apart_needs_nothing(history_[a] + task.mesh * tri::kHistoryDoubles))
     return tri::apart_result(stats);
   const tri::Body &particle = particles_->body(a);
-  tri::InteractionSettings s = settings_.interaction;
-  s.coefficients = materials_.get(atom->type[a], meshes_[task.mesh]->atomTypeWall());
+  const tri::InteractionSettings &s =
+      materials_.settings(atom->type[a], meshes_[task.mesh]->atomTypeWall());
   double *stored = s.coefficients.tangential == tri::TangentialModel::no_history
                        ? nullptr
                        : history_[a] + task.mesh * tri::kHistoryDoubles;

@@ -19,10 +19,11 @@ std::string number(double v) {
 }
 } // namespace
 
-void MaterialTable::load(LAMMPS_NS::LAMMPS *lmp, int ntypes, const tri::ContactCoefficients &sw,
+void MaterialTable::load(LAMMPS_NS::LAMMPS *lmp, int ntypes, const tri::InteractionSettings &base,
                          tri::MaterialModel model,
                          const std::vector<tri::EquivalentSphere> &spheres, bool walls,
                          const std::string &caller) {
+  const tri::ContactCoefficients &sw = base.coefficients;
   using LAMMPS_NS::FixPropertyGlobal;
   const std::string who = model == tri::MaterialModel::hooke_stiffness
                               ? caller
@@ -50,7 +51,7 @@ void MaterialTable::load(LAMMPS_NS::LAMMPS *lmp, int ntypes, const tri::ContactC
   }
 
   ntypes_ = ntypes;
-  table_.assign(static_cast<std::size_t>(ntypes + 1) * (ntypes + 1), sw);
+  table_.assign(static_cast<std::size_t>(ntypes + 1) * (ntypes + 1), base);
   if (!mapped) {
     FixPropertyGlobal *kn = pairwise("kn");
     FixPropertyGlobal *kt = pairwise("kt");
@@ -69,7 +70,7 @@ void MaterialTable::load(LAMMPS_NS::LAMMPS *lmp, int ntypes, const tri::ContactC
         const std::string problem = tri::coefficient_error(c);
         if (!problem.empty())
           fail(i, j, problem);
-        table_[static_cast<std::size_t>(i) * (ntypes + 1) + j] = c;
+        table_[static_cast<std::size_t>(i) * (ntypes + 1) + j].coefficients = c;
       }
     return;
   }
@@ -113,7 +114,7 @@ void MaterialTable::load(LAMMPS_NS::LAMMPS *lmp, int ntypes, const tri::ContactC
         const std::string problem = tri::coefficient_error(c);
         if (!problem.empty())
           fail(i, j, problem);
-        table_[static_cast<std::size_t>(i) * (ntypes + 1) + j] = c;
+        table_[static_cast<std::size_t>(i) * (ntypes + 1) + j].coefficients = c;
       } catch (const std::invalid_argument &ex) {
         fail(i, j, ex.what());
       }

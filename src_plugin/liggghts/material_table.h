@@ -12,6 +12,7 @@
 #pragma once
 
 #include "contact_board.h"
+#include "body_interaction.h" // InteractionSettings
 #include "contact_model.h"
 #include "material_mapping.h"
 
@@ -26,14 +27,20 @@ namespace tri_liggghts {
 
 class MaterialTable {
 public:
-  // Reads the properties for types 1..ntypes; `switches` supplies the model flags. `spheres`
-  // (index = atom type, [0] unused) are the types' equivalent spheres, needed by hooke and
-  // hertz; with `walls` the table's second type is a wall's (the mesh type). A missing property
-  // or a bad value ends in error->all naming it and `caller`.
-  void load(LAMMPS_NS::LAMMPS *lmp, int ntypes, const tri::ContactCoefficients &switches,
+  // Reads the properties for types 1..ntypes; `base` is the style's settings, whose
+  // coefficients supply the model flags. `spheres` (index = atom type, [0] unused) are the
+  // types' equivalent spheres, needed by hooke and hertz; with `walls` the table's second type
+  // is a wall's (the mesh type). A missing property or a bad value ends in error->all naming it
+  // and `caller`.
+  void load(LAMMPS_NS::LAMMPS *lmp, int ntypes, const tri::InteractionSettings &base,
             tri::MaterialModel model, const std::vector<tri::EquivalentSphere> &spheres, bool walls,
             const std::string &caller);
   const tri::ContactCoefficients &get(int itype, int jtype) const {
+    return settings(itype, jtype).coefficients;
+  }
+  // The style's settings with the coefficients of (itype, jtype): what body_interaction takes,
+  // read in place (a copy per pair and evaluation was a memmove of its whole size, every step).
+  const tri::InteractionSettings &settings(int itype, int jtype) const {
     return table_[static_cast<std::size_t>(itype) * (ntypes_ + 1) + jtype];
   }
   // m/s; 0 where the deck defines no characteristicVelocity (hooke/stiffness only).
@@ -44,7 +51,7 @@ public:
 private:
   int ntypes_ = 0;
   double v_char_ = 0.0;
-  std::vector<tri::ContactCoefficients> table_;
+  std::vector<tri::InteractionSettings> table_;
 };
 
 } // namespace tri_liggghts

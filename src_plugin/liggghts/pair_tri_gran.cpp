@@ -48,7 +48,7 @@ void PairTriGran::init_style() {
   particles_ = static_cast<FixTriParticles *>(modify->find_fix_style("tri/particles", 0));
   if (!particles_)
     error->all(FLERR, "Pair tri/gran requires fix tri/particles (define it before the run)");
-  materials_.load(lmp, atom->ntypes, settings_.interaction.coefficients, settings_.model,
+  materials_.load(lmp, atom->ntypes, settings_.interaction, settings_.model,
                   particles_->type_bodies().sphere, false, "pair tri/gran");
   tri_liggghts::ContactBoard &board = particles_->board();
   board_slot_ = board.join("pair", tri_liggghts::SourceKind::particle_pairs);
@@ -127,8 +127,7 @@ tri::PairForceResult PairTriGran::evaluate(const Task &task, tri::InteractionScr
   // prepare() has tested the kept gap and axis.
   const tri::SeparationCache cache{task.axis ? v.axis : nullptr, update_history, task.candidates,
                                    true};
-  tri::InteractionSettings s = settings_.interaction;
-  s.coefficients = materials_.get(atom->type[v.a], atom->type[v.b]);
+  const tri::InteractionSettings &s = materials_.settings(atom->type[v.a], atom->type[v.b]);
   // Stored as seen from (i, j); the kernel sees it from (a, b), and the view writes the values
   // back when it goes out of scope.
   tri::HistoryView history(task.history, task.swapped, update_history);

@@ -11,8 +11,12 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <array>
 #include <atomic>
+#include <cmath>
+#include <cstdint>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 using Eigen::Vector3d;
@@ -280,4 +284,49 @@ TEST(BodyInteraction, WallVelocityIsTheRigidMotionsAtTheContact) {
   const Vector3d drag(r.force_a.x(), r.force_a.y(), 0.0);
   ASSERT_GT(drag.norm(), 0.0);
   EXPECT_GT(drag.normalized().dot(surface.normalized()), 1.0 - 1e-9);
+}
+
+// apply() sums the atoms on the last run's threads once there are enough of them: every atom's
+// sum is the same bits as on one thread (each atom's contributions, in partner order, are its
+// own), also for contributions made in any order and partners repeated (two images).
+TEST(InteractionEngine, ApplyOnSeveralThreadsSumsEveryAtomAsOnOne) {
+  const int atoms = 1000, per_atom = 7;
+  std::vector<std::array<double, 6>> values;
+  std::vector<std::pair<int, long long>> keys;
+  std::uint64_t state = 12345;
+  auto next = [&]() { // a fixed sequence: the same contributions for both runs
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<double>(state >> 11) * 0x1.0p-53;
+  };
+  for (int k = 0; k < atoms * per_atom; ++k) {
+    keys.emplace_back(static_cast<int>(next() * atoms), static_cast<long long>(next() * 20));
+    std::array<double, 6> v;
+    for (double &x : v)
+      x = (next() - 0.5) * std::pow(10.0, static_cast<int>(next() * 30) - 15);
+    values.push_back(v);
+  }
+  auto apply_on = [&](int threads) {
+    tri::InteractionEngine engine;
+    engine.run(8 * 64 * threads, threads,
+               [](std::size_t, tri::InteractionScratch &, tri::ContactStats &) {
+                 return tri::PairForceResult{};
+               });
+    for (std::size_t k = 0; k < keys.size(); ++k)
+      engine.contribute(keys[k].first, keys[k].second,
+                        Vector3d(values[k][0], values[k][1], values[k][2]),
+                        Vector3d(values[k][3], values[k][4], values[k][5]));
+    std::vector<double> f(3 * atoms, 0.0), t(3 * atoms, 0.0);
+    std::vector<double *> frows(atoms), trows(atoms);
+    for (int a = 0; a < atoms; ++a) {
+      frows[a] = &f[3 * a];
+      trows[a] = &t[3 * a];
+    }
+    engine.apply(frows.data(), trows.data());
+    f.insert(f.end(), t.begin(), t.end());
+    return f;
+  };
+  const std::vector<double> one = apply_on(1);
+  EXPECT_EQ(one, apply_on(2));
+  EXPECT_EQ(one, apply_on(4));
+  EXPECT_NE(one, std::vector<double>(one.size(), 0.0));
 }
