@@ -13,6 +13,7 @@ void InteractionEngine::prepare(std::size_t n, int threads) {
   threads_ = threads;
   // Every task writes its slot (record_failure those that throw): no fill of all of them.
   results_.resize(n);
+  recipients_.assign(n, Recipients{});
   failed_task_ = n;
   failure_.clear();
 }
@@ -62,16 +63,6 @@ void InteractionEngine::finish() {
     tally_.add(r);
 }
 
-void InteractionEngine::contribute(int atom, long long partner, const Eigen::Vector3d &force,
-                                   const Eigen::Vector3d &torque) {
-  Contribution c{atom, partner, {}, {}};
-  for (int d = 0; d < 3; ++d) {
-    c.force[d] = force[d];
-    c.torque[d] = torque[d];
-  }
-  contributions_.push_back(c);
-}
-
 void InteractionEngine::apply(double **f, double **torque) {
   // The order of a stable sort by (atom, partner): two images of one partner (a periodic box
   // smaller than a particle's reach) keep the order they were contributed in. A counting sort
@@ -79,6 +70,14 @@ void InteractionEngine::apply(double **f, double **torque) {
   // sort, stable): a comparison sort of the whole list was 6 % of a settled pile's step. Each
   // atom's sum is its own, so the atoms are summed on the last run's threads (the sort and the
   // sums were a twentieth of a settled pile's step, all of it on one thread).
+  contributions_.clear();
+  for (std::size_t k = 0; k < recipients_.size(); ++k) {
+    const Recipients &r = recipients_[k];
+    if (r.a >= 0)
+      contributions_.push_back({r.a, r.partner_of_a, static_cast<std::uint32_t>(k), 0});
+    if (r.b >= 0)
+      contributions_.push_back({r.b, r.partner_of_b, static_cast<std::uint32_t>(k), 1});
+  }
   int atoms = 0;
   for (const Contribution &c : contributions_)
     atoms = std::max(atoms, c.atom + 1);
@@ -95,6 +94,7 @@ void InteractionEngine::apply(double **f, double **torque) {
       sorted_[next[contributions_[i].atom]++] = static_cast<std::uint32_t>(i);
   }
   const Contribution *const from = contributions_.data();
+  const PairForceResult *const results = results_.data();
   std::uint32_t *const order = sorted_.data();
   const std::size_t *const first = first_of_atom_.data();
   const int threads = atoms >= kApplyAtomsPerThread * threads_ ? threads_ : 1;
@@ -104,17 +104,22 @@ void InteractionEngine::apply(double **f, double **torque) {
     for (std::size_t i = begin + 1; i < end; ++i)
       for (std::size_t j = i; j > begin && from[order[j]].partner < from[order[j - 1]].partner; --j)
         std::swap(order[j], order[j - 1]);
-    for (std::size_t i = begin; i < end; ++i)
+    for (std::size_t i = begin; i < end; ++i) {
+      const Contribution &c = from[order[i]];
+      const PairForceResult &r = results[c.task];
+      const Eigen::Vector3d &t = c.side == 0 ? r.torque_a : r.torque_b;
       for (int d = 0; d < 3; ++d) {
-        f[a][d] += from[order[i]].force[d];
-        torque[a][d] += from[order[i]].torque[d];
+        f[a][d] += c.side == 0 ? r.force_a[d] : -r.force_a[d];
+        torque[a][d] += t[d];
       }
+    }
   }
 }
 
 std::size_t InteractionEngine::bytes() const {
   std::size_t b = results_.capacity() * sizeof(PairForceResult) +
                   contributions_.capacity() * sizeof(Contribution) +
+                  recipients_.capacity() * sizeof(Recipients) +
                   thread_stats_.capacity() * sizeof(ThreadStats) +
                   sorted_.capacity() * sizeof(std::uint32_t) +
                   (first_of_atom_.capacity() + next_of_atom_.capacity()) * sizeof(std::size_t);

@@ -84,20 +84,29 @@ public:
   // Statistics of the last run.
   const InteractionTally &tally() const { return tally_; }
 
-  // Ordered summation: contribute() the force and torque that task results put on an atom,
-  // then apply() adds them to f and torque (rows indexed by atom) in (atom, partner) order.
-  void clear_contributions() { contributions_.clear(); }
-  void contribute(int atom, long long partner, const Eigen::Vector3d &force,
-                  const Eigen::Vector3d &torque);
+  // Ordered summation of the results' forces. Task k's result acts on up to two atoms: a takes
+  // force_a and torque_a, b takes -force_a and torque_b; set_recipients(k, ...) names them and
+  // their partners (-1: no atom; a wall's task names a only), any time after run() and before
+  // apply(), on any thread (each task its own slot), by default none. apply() adds them to f
+  // and torque (rows indexed by atom) in (atom, partner) order, ties in task order (a before
+  // b): the sums do not depend on the thread count.
+  void set_recipients(std::size_t k, int a, long long partner_of_a, int b, long long partner_of_b) {
+    recipients_[k] = {a, b, partner_of_a, partner_of_b};
+  }
   void apply(double **f, double **torque);
 
   std::size_t bytes() const; // heap memory held
 
 private:
-  struct Contribution {
+  struct Recipients {
+    int a = -1, b = -1;
+    long long partner_of_a = 0, partner_of_b = 0;
+  };
+  struct Contribution { // one side of a task: its atom, partner, task and side (0: a, 1: b)
     int atom;
     long long partner;
-    double force[3], torque[3];
+    std::uint32_t task;
+    int side;
   };
   std::vector<InteractionScratch> scratch_; // one per thread
   // One per thread, each on cache lines of its own: every task adds to its thread's counters,
@@ -107,7 +116,8 @@ private:
   std::vector<ThreadStats> thread_stats_;
   std::vector<std::vector<long>> deferred_;  // per thread: the group's deferred tasks, by job
   std::vector<PairForceResult> results_;
-  std::vector<Contribution> contributions_;
+  std::vector<Recipients> recipients_;       // per task
+  std::vector<Contribution> contributions_; // apply(): the named sides, in task order
   std::vector<std::uint32_t> sorted_; // apply(): contributions_' indices by (atom, partner)
   std::vector<std::size_t> first_of_atom_, next_of_atom_; // apply(): the counting sort
   InteractionTally tally_;

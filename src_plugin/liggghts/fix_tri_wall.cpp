@@ -270,14 +270,13 @@ void FixTriWall::compute(bool update_history) {
   }
   tri_liggghts::IntersectingPair first;
   tri_liggghts::DeepestContact deepest;
-  engine_.clear_contributions();
   for (std::size_t k = 0; k < ntasks_; ++k) {
     const tri::PairForceResult &r = engine_.result(k);
     const int a = tasks_[k].atom;
     if (r.intersecting && !first.found())
       first = {atom->tag[a], 0};
     deepest.consider(r, atom->tag[a], 0, mesh_ids_[tasks_[k].mesh]);
-    engine_.contribute(a, tasks_[k].mesh, r.force_a, r.torque_a);
+    engine_.set_recipients(k, a, tasks_[k].mesh, -1, 0);
   }
   engine_.apply(atom->f, atom->torque);
   particles_->board().publish(board_slot_, engine_.tally(), first);

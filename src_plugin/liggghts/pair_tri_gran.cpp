@@ -12,6 +12,10 @@
 
 #include <algorithm>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 using namespace LAMMPS_NS;
 
 namespace {
@@ -67,8 +71,6 @@ void PairTriGran::collect_tasks() {
   const bool tangential =
       settings_.interaction.coefficients.tangential == tri::TangentialModel::history;
   const bool coherent = settings_.interaction.coherence > 0.0;
-  tasks_.clear();
-  candidates_.begin_step();
   // Every neighbour pair every step, most of them apart: the arrays in locals, which the
   // stores below cannot change (through atom-> they are reloaded for every pair).
   double *const *const x = atom->x;
@@ -77,35 +79,75 @@ void PairTriGran::collect_tasks() {
   const int inum = list->inum;
   const int *const ilist = list->ilist, *const numneigh = list->numneigh;
   int *const *const firstneigh = list->firstneigh;
-  for (int ii = 0; ii < inum; ++ii) {
-    const int i = ilist[ii];
-    const int *jlist = firstneigh[i];
-    const double xi = x[i][0], yi = x[i][1], zi = x[i][2], ri = radius[i];
-    const int jnum = numneigh[i];
-    for (int jj = 0; jj < jnum; ++jj) {
-      const int j = jlist[jj] & NEIGHMASK;
-      const double dx = xi - x[j][0], dy = yi - x[j][1], dz = zi - x[j][2];
-      const double reach = ri + radius[j];
-      double *values = first_history ? &first_history[i][dnum * jj] : nullptr;
-      int *touching = first_touch ? &first_touch[i][jj] : nullptr;
-      if (dx * dx + dy * dy + dz * dz >= reach * reach) {
-        // Apart: the contact, if there was one, has ended; the axis is dropped. Untouched
-        // values are zero already (touching is set wherever one is not: below).
-        if (values && *touching) {
-          std::fill(values, values + dnum_pairgran, 0.0);
-          *touching = 0;
+  // The neighbour lists on the pair loop's threads, each a contiguous range of atoms into a
+  // list of its own, then those lists one after the other: the tasks in the serial loop's
+  // order for any thread count. (On one thread this loop was a twentieth of a settled pile's
+  // step, with the other threads waiting.)
+  const int nthreads = tri_liggghts::pair_loop_threads(settings_.loop, inum);
+  if (static_cast<int>(chunk_tasks_.size()) < nthreads)
+    chunk_tasks_.resize(nthreads);
+  auto range = [&](int t, std::vector<Task> &out) {
+    out.clear();
+    const int begin = static_cast<int>(static_cast<long long>(inum) * t / nthreads);
+    const int end = static_cast<int>(static_cast<long long>(inum) * (t + 1) / nthreads);
+    for (int ii = begin; ii < end; ++ii) {
+      const int i = ilist[ii];
+      const int *jlist = firstneigh[i];
+      const double xi = x[i][0], yi = x[i][1], zi = x[i][2], ri = radius[i];
+      const int jnum = numneigh[i];
+      for (int jj = 0; jj < jnum; ++jj) {
+        const int j = jlist[jj] & NEIGHMASK;
+        const double dx = xi - x[j][0], dy = yi - x[j][1], dz = zi - x[j][2];
+        const double reach = ri + radius[j];
+        double *values = first_history ? &first_history[i][dnum * jj] : nullptr;
+        int *touching = first_touch ? &first_touch[i][jj] : nullptr;
+        if (dx * dx + dy * dy + dz * dz >= reach * reach) {
+          // Apart: the contact, if there was one, has ended; the axis is dropped. Untouched
+          // values are zero already (touching is set wherever one is not: below).
+          if (values && *touching) {
+            std::fill(values, values + dnum_pairgran, 0.0);
+            *touching = 0;
+          }
+          continue;
         }
-        continue;
+        double *history = values && tangential ? values : nullptr;
+        double *axis = values && settings_.separation ? values + axis_offset_ : nullptr;
+        out.push_back({i, j, tag[j] < tag[i], history, axis, values, touching, nullptr});
       }
-      double *history = values && tangential ? values : nullptr;
-      double *axis = values && settings_.separation ? values + axis_offset_ : nullptr;
-      tri::CandidateCache *candidates =
-          coherent ? candidates_.entry(tasks_.size(),
-                                        tri_liggghts::CandidateStore::pair_key(tag[i], tag[j]))
-                   : nullptr;
-      tasks_.push_back({i, j, tag[j] < tag[i], history, axis, values, touching, candidates});
+    }
+  };
+  if (nthreads <= 1) {
+    range(0, tasks_);
+  } else {
+    std::size_t total = 0;
+#pragma omp parallel num_threads(nthreads)
+    {
+      int t = 0;
+#ifdef _OPENMP
+      t = omp_get_thread_num();
+#endif
+      range(t, chunk_tasks_[t]);
+#pragma omp barrier
+#pragma omp single
+      {
+        for (int c = 0; c < nthreads; ++c)
+          total += chunk_tasks_[c].size();
+        tasks_.resize(total);
+      } // (an implied barrier)
+      std::size_t offset = 0;
+      for (int c = 0; c < t; ++c)
+        offset += chunk_tasks_[c].size();
+      std::copy(chunk_tasks_[t].begin(), chunk_tasks_[t].end(), tasks_.begin() + offset);
     }
   }
+  // The kept candidates: the store is one per style and its entries are handed out in task
+  // order (candidate_store.h), so this stays serial; between rebuilds of the neighbour list
+  // nearly every lookup is its slot's hint from the step before.
+  candidates_.begin_step();
+  if (coherent)
+    for (std::size_t k = 0; k < tasks_.size(); ++k)
+      tasks_[k].candidates = candidates_.entry(
+          k, tri_liggghts::CandidateStore::pair_key(tag[tasks_[k].i], tag[tasks_[k].j]));
   candidates_.end_step();
 }
 
@@ -203,6 +245,11 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
                   *task.touching = std::any_of(from, values + dnum_pairgran,
                                                [](double v) { return v != 0.0; });
                 }
+                if (r.contacts_after > 0) { // r is the force on the pair's first atom (a)
+                  const int a = task.swapped ? task.j : task.i, b = task.swapped ? task.i : task.j;
+                  engine_.set_recipients(k, newton || a < nlocal ? a : -1, atom->tag[b],
+                                         newton || b < nlocal ? b : -1, atom->tag[a]);
+                } // (a is i or j; i is always owned)
                 const tri::BodyState &si = particles_->body(task.i).state;
                 const tri::BodyState &sj = particles_->body(task.j).state;
                 task_geometry_[k] =
@@ -217,7 +264,6 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
   tri_liggghts::IntersectingPair first;
   tri_liggghts::DeepestContact deepest;
   tri_liggghts::FastestPair fastest;
-  engine_.clear_contributions();
   for (std::size_t k = 0; k < tasks_.size(); ++k) {
     const Task &t = tasks_[k];
     const tri::PairForceResult &r = engine_.result(k);
@@ -225,16 +271,8 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
     if (r.intersecting && !first.found())
       first = {std::min(tag[t.i], tag[t.j]), std::max(tag[t.i], tag[t.j])};
     deepest.consider(r, std::min(tag[t.i], tag[t.j]), std::max(tag[t.i], tag[t.j]));
-    if (r.contacts_after == 0)
-      continue;
-    // r is the force on the pair's first atom (a) and the torques on both.
-    const int a = t.swapped ? t.j : t.i, b = t.swapped ? t.i : t.j;
-    if (newton || a < nlocal) // a is i or j; i is always owned
-      engine_.contribute(a, tag[b], r.force_a, r.torque_a);
-    if (newton || b < nlocal)
-      engine_.contribute(b, tag[a], -r.force_a, r.torque_b);
   }
-  engine_.apply(atom->f, atom->torque);
+  engine_.apply(atom->f, atom->torque); // the recipients set on the threads, above
   tri_liggghts::ContactBoard &board = particles_->board();
   board.publish(board_slot_, engine_.tally(), first);
   board.publish_deepest(board_slot_, deepest);

@@ -89,12 +89,9 @@ EngineRun evaluate_row(const std::vector<Particle> &ps, int threads) {
     frows[a] = &f[3 * a];
     trows[a] = &t[3 * a];
   }
-  // Contributed in reverse: apply() must still sum per atom in partner order.
-  for (int k = n - 2; k >= 0; --k) {
-    const tri::PairForceResult &r = engine.result(k);
-    engine.contribute(k, k + 1, r.force_a, r.torque_a);
-    engine.contribute(k + 1, k, -r.force_a, r.torque_b);
-  }
+  // Named in reverse: apply() must still sum per atom in partner order.
+  for (int k = n - 2; k >= 0; --k)
+    engine.set_recipients(k, k, k + 1, k + 1, k);
   engine.apply(frows.data(), trows.data());
   out.f = f;
   out.t = t;
@@ -176,18 +173,30 @@ TEST(InteractionEngine, EveryTaskRunsOnceWhateverTheSchedule) {
 
 TEST(InteractionEngine, AppliesInAtomThenPartnerOrder) {
   tri::InteractionEngine engine;
-  engine.run(0, 1, [](std::size_t, tri::InteractionScratch &, tri::ContactStats &) {
-    return tri::PairForceResult{};
-  });
   // Values whose sum depends on the order: 1e16 + 1 - 1e16 is 0 one way, 1 another.
-  engine.contribute(0, 7, Vector3d(1.0, 0, 0), Vector3d::Zero());
-  engine.contribute(0, 3, Vector3d(1e16, 0, 0), Vector3d::Zero());
-  engine.contribute(0, 9, Vector3d(-1e16, 0, 0), Vector3d::Zero());
-  double f0[3] = {0, 0, 0}, t0[3] = {0, 0, 0};
-  double *f[1] = {f0}, *t[1] = {t0};
+  const double force[3] = {1.0, 1e16, -1e16};
+  engine.run(3, 1, [&](std::size_t k, tri::InteractionScratch &, tri::ContactStats &) {
+    tri::PairForceResult r;
+    r.force_a = Vector3d(force[k], 0, 0);
+    r.torque_b = Vector3d(0, force[k], 0);
+    return r;
+  });
+  const long long partner[3] = {7, 3, 9};
+  for (std::size_t k = 0; k < 3; ++k)
+    engine.set_recipients(k, 0, partner[k], 1, partner[k]);
+  double f0[3] = {0, 0, 0}, t0[3] = {0, 0, 0}, f1[3] = {0, 0, 0}, t1[3] = {0, 0, 0};
+  double *f[2] = {f0, f1}, *t[2] = {t0, t1};
   engine.apply(f, t);
-  // Partner order 3, 7, 9: (1e16 + 1) - 1e16 = 0 in doubles.
+  // Partner order 3, 7, 9: (1e16 + 1) - 1e16 = 0 in doubles. b takes -force_a and torque_b.
   EXPECT_EQ(f0[0], (1e16 + 1.0) - 1e16);
+  EXPECT_EQ(f1[0], (-1e16 - 1.0) + 1e16);
+  EXPECT_EQ(t1[1], (1e16 + 1.0) - 1e16);
+  EXPECT_EQ(t0[1], 0.0);
+  // A task without recipients adds nothing (a pair without contacts, a ghost's side).
+  engine.set_recipients(1, -1, 0, -1, 0);
+  f0[0] = 0.0;
+  engine.apply(f, t);
+  EXPECT_EQ(f0[0], 1.0 - 1e16);
 }
 
 TEST(InteractionEngine, ExceptionsAreCaughtAndTheLowestFailingTaskIsNamed) {
@@ -290,31 +299,36 @@ TEST(BodyInteraction, WallVelocityIsTheRigidMotionsAtTheContact) {
 // sum is the same bits as on one thread (each atom's contributions, in partner order, are its
 // own), also for contributions made in any order and partners repeated (two images).
 TEST(InteractionEngine, ApplyOnSeveralThreadsSumsEveryAtomAsOnOne) {
-  const int atoms = 1000, per_atom = 7;
-  std::vector<std::array<double, 6>> values;
-  std::vector<std::pair<int, long long>> keys;
+  const int atoms = 1000, tasks = 3500;
+  std::vector<std::array<double, 9>> values;
+  std::vector<std::array<long long, 4>> names; // a, partner of a, b, partner of b
   std::uint64_t state = 12345;
-  auto next = [&]() { // a fixed sequence: the same contributions for both runs
+  auto next = [&]() { // a fixed sequence: the same tasks for every run
     state = state * 6364136223846793005ULL + 1442695040888963407ULL;
     return static_cast<double>(state >> 11) * 0x1.0p-53;
   };
-  for (int k = 0; k < atoms * per_atom; ++k) {
-    keys.emplace_back(static_cast<int>(next() * atoms), static_cast<long long>(next() * 20));
-    std::array<double, 6> v;
+  for (int k = 0; k < tasks; ++k) {
+    std::array<long long, 4> n;
+    for (long long &v : n)
+      v = static_cast<long long>(next() * atoms) - (next() < 0.1 ? atoms : 0); // some -1: none
+    names.push_back(n);
+    std::array<double, 9> v;
     for (double &x : v)
       x = (next() - 0.5) * std::pow(10.0, static_cast<int>(next() * 30) - 15);
     values.push_back(v);
   }
   auto apply_on = [&](int threads) {
     tri::InteractionEngine engine;
-    engine.run(8 * 64 * threads, threads,
-               [](std::size_t, tri::InteractionScratch &, tri::ContactStats &) {
-                 return tri::PairForceResult{};
-               });
-    for (std::size_t k = 0; k < keys.size(); ++k)
-      engine.contribute(keys[k].first, keys[k].second,
-                        Vector3d(values[k][0], values[k][1], values[k][2]),
-                        Vector3d(values[k][3], values[k][4], values[k][5]));
+    engine.run(tasks, threads, [&](std::size_t k, tri::InteractionScratch &, tri::ContactStats &) {
+      tri::PairForceResult r;
+      r.force_a = Vector3d(values[k][0], values[k][1], values[k][2]);
+      r.torque_a = Vector3d(values[k][3], values[k][4], values[k][5]);
+      r.torque_b = Vector3d(values[k][6], values[k][7], values[k][8]);
+      return r;
+    });
+    for (std::size_t k = 0; k < names.size(); ++k) // partners repeat: ties in task order
+      engine.set_recipients(k, static_cast<int>(std::max(-1LL, names[k][0])), names[k][1] % 7,
+                            static_cast<int>(std::max(-1LL, names[k][2])), names[k][3] % 7);
     std::vector<double> f(3 * atoms, 0.0), t(3 * atoms, 0.0);
     std::vector<double *> frows(atoms), trows(atoms);
     for (int a = 0; a < atoms; ++a) {
