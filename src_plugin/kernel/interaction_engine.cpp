@@ -10,7 +10,6 @@ void InteractionEngine::prepare(std::size_t n, int threads) {
   if (static_cast<int>(deferred_.size()) < threads)
     deferred_.resize(threads);
   thread_stats_.assign(threads, ThreadStats{});
-  threads_ = threads;
   // Every task writes its slot (record_failure those that throw): no fill of all of them.
   results_.resize(n);
   recipients_.assign(n, Recipients{});
@@ -65,11 +64,10 @@ void InteractionEngine::finish() {
 
 void InteractionEngine::apply(double **f, double **torque) {
   // The order of a stable sort by (atom, partner): two images of one partner (a periodic box
-  // smaller than a particle's reach) keep the order they were contributed in. A counting sort
-  // of the contributions' indices by atom (stable), then each atom's few by partner (insertion
-  // sort, stable): a comparison sort of the whole list was 6 % of a settled pile's step. Each
-  // atom's sum is its own, so the atoms are summed on the last run's threads (the sort and the
-  // sums were a twentieth of a settled pile's step, all of it on one thread).
+  // smaller than a particle's reach) keep their tasks' order. A counting sort of the sides'
+  // indices by atom (stable), then each atom's few by partner (insertion sort, stable): a
+  // comparison sort of the whole list was 6 % of a settled pile's step. (Summing the atoms on
+  // the run's threads measured slower on 2 threads: the fork cost more than the sums.)
   contributions_.clear();
   for (std::size_t k = 0; k < recipients_.size(); ++k) {
     const Recipients &r = recipients_[k];
@@ -97,8 +95,6 @@ void InteractionEngine::apply(double **f, double **torque) {
   const PairForceResult *const results = results_.data();
   std::uint32_t *const order = sorted_.data();
   const std::size_t *const first = first_of_atom_.data();
-  const int threads = atoms >= kApplyAtomsPerThread * threads_ ? threads_ : 1;
-#pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1)
   for (int a = 0; a < atoms; ++a) {
     const std::size_t begin = first[a], end = first[a + 1];
     for (std::size_t i = begin + 1; i < end; ++i)

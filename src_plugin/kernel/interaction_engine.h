@@ -121,10 +121,6 @@ private:
   std::vector<std::uint32_t> sorted_; // apply(): contributions_' indices by (atom, partner)
   std::vector<std::size_t> first_of_atom_, next_of_atom_; // apply(): the counting sort
   InteractionTally tally_;
-  int threads_ = 1; // of the last run; apply() sums the atoms on as many
-  // apply() on several threads only with at least this many atoms each (fewer: the fork costs
-  // more than the sums).
-  static constexpr int kApplyAtomsPerThread = 64;
   std::size_t failed_task_ = 0;
   std::string failure_;
 

@@ -12,10 +12,6 @@
 
 #include <algorithm>
 
-#ifdef _OPENMP
-#include <omp.h>
-#endif
-
 using namespace LAMMPS_NS;
 
 namespace {
@@ -71,6 +67,8 @@ void PairTriGran::collect_tasks() {
   const bool tangential =
       settings_.interaction.coefficients.tangential == tri::TangentialModel::history;
   const bool coherent = settings_.interaction.coherence > 0.0;
+  tasks_.clear();
+  candidates_.begin_step();
   // Every neighbour pair every step, most of them apart: the arrays in locals, which the
   // stores below cannot change (through atom-> they are reloaded for every pair).
   double *const *const x = atom->x;
@@ -79,75 +77,35 @@ void PairTriGran::collect_tasks() {
   const int inum = list->inum;
   const int *const ilist = list->ilist, *const numneigh = list->numneigh;
   int *const *const firstneigh = list->firstneigh;
-  // The neighbour lists on the pair loop's threads, each a contiguous range of atoms into a
-  // list of its own, then those lists one after the other: the tasks in the serial loop's
-  // order for any thread count. (On one thread this loop was a twentieth of a settled pile's
-  // step, with the other threads waiting.)
-  const int nthreads = tri_liggghts::pair_loop_threads(settings_.loop, inum);
-  if (static_cast<int>(chunk_tasks_.size()) < nthreads)
-    chunk_tasks_.resize(nthreads);
-  auto range = [&](int t, std::vector<Task> &out) {
-    out.clear();
-    const int begin = static_cast<int>(static_cast<long long>(inum) * t / nthreads);
-    const int end = static_cast<int>(static_cast<long long>(inum) * (t + 1) / nthreads);
-    for (int ii = begin; ii < end; ++ii) {
-      const int i = ilist[ii];
-      const int *jlist = firstneigh[i];
-      const double xi = x[i][0], yi = x[i][1], zi = x[i][2], ri = radius[i];
-      const int jnum = numneigh[i];
-      for (int jj = 0; jj < jnum; ++jj) {
-        const int j = jlist[jj] & NEIGHMASK;
-        const double dx = xi - x[j][0], dy = yi - x[j][1], dz = zi - x[j][2];
-        const double reach = ri + radius[j];
-        double *values = first_history ? &first_history[i][dnum * jj] : nullptr;
-        int *touching = first_touch ? &first_touch[i][jj] : nullptr;
-        if (dx * dx + dy * dy + dz * dz >= reach * reach) {
-          // Apart: the contact, if there was one, has ended; the axis is dropped. Untouched
-          // values are zero already (touching is set wherever one is not: below).
-          if (values && *touching) {
-            std::fill(values, values + dnum_pairgran, 0.0);
-            *touching = 0;
-          }
-          continue;
+  for (int ii = 0; ii < inum; ++ii) {
+    const int i = ilist[ii];
+    const int *jlist = firstneigh[i];
+    const double xi = x[i][0], yi = x[i][1], zi = x[i][2], ri = radius[i];
+    const int jnum = numneigh[i];
+    for (int jj = 0; jj < jnum; ++jj) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const double dx = xi - x[j][0], dy = yi - x[j][1], dz = zi - x[j][2];
+      const double reach = ri + radius[j];
+      double *values = first_history ? &first_history[i][dnum * jj] : nullptr;
+      int *touching = first_touch ? &first_touch[i][jj] : nullptr;
+      if (dx * dx + dy * dy + dz * dz >= reach * reach) {
+        // Apart: the contact, if there was one, has ended; the axis is dropped. Untouched
+        // values are zero already (touching is set wherever one is not: below).
+        if (values && *touching) {
+          std::fill(values, values + dnum_pairgran, 0.0);
+          *touching = 0;
         }
-        double *history = values && tangential ? values : nullptr;
-        double *axis = values && settings_.separation ? values + axis_offset_ : nullptr;
-        out.push_back({i, j, tag[j] < tag[i], history, axis, values, touching, nullptr});
+        continue;
       }
-    }
-  };
-  if (nthreads <= 1) {
-    range(0, tasks_);
-  } else {
-    std::size_t total = 0;
-#pragma omp parallel num_threads(nthreads)
-    {
-      int t = 0;
-#ifdef _OPENMP
-      t = omp_get_thread_num();
-#endif
-      range(t, chunk_tasks_[t]);
-#pragma omp barrier
-#pragma omp single
-      {
-        for (int c = 0; c < nthreads; ++c)
-          total += chunk_tasks_[c].size();
-        tasks_.resize(total);
-      } // (an implied barrier)
-      std::size_t offset = 0;
-      for (int c = 0; c < t; ++c)
-        offset += chunk_tasks_[c].size();
-      std::copy(chunk_tasks_[t].begin(), chunk_tasks_[t].end(), tasks_.begin() + offset);
+      double *history = values && tangential ? values : nullptr;
+      double *axis = values && settings_.separation ? values + axis_offset_ : nullptr;
+      tri::CandidateCache *candidates =
+          coherent ? candidates_.entry(tasks_.size(),
+                                        tri_liggghts::CandidateStore::pair_key(tag[i], tag[j]))
+                   : nullptr;
+      tasks_.push_back({i, j, tag[j] < tag[i], history, axis, values, touching, candidates});
     }
   }
-  // The kept candidates: the store is one per style and its entries are handed out in task
-  // order (candidate_store.h), so this stays serial; between rebuilds of the neighbour list
-  // nearly every lookup is its slot's hint from the step before.
-  candidates_.begin_step();
-  if (coherent)
-    for (std::size_t k = 0; k < tasks_.size(); ++k)
-      tasks_[k].candidates = candidates_.entry(
-          k, tri_liggghts::CandidateStore::pair_key(tag[tasks_[k].i], tag[tasks_[k].j]));
   candidates_.end_step();
 }
 

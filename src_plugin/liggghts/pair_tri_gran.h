@@ -71,7 +71,6 @@ private:
     tri::CandidateCache *candidates; // the pair's kept candidates, or null
     bool apart = false; // proven apart by its kept gap or axis, from the poses (prepare)
   };
-  std::vector<std::vector<Task>> chunk_tasks_; // collect_tasks: per thread, its atoms' tasks
   static constexpr std::size_t kPrefetchAhead = 2;
   void prefetch(const Task &t);
   // A task as the kernel sees it: (a, b) in tag order, its axis copied with the sign of (a, b).

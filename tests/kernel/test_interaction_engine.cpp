@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <cmath>
@@ -295,52 +296,74 @@ TEST(BodyInteraction, WallVelocityIsTheRigidMotionsAtTheContact) {
   EXPECT_GT(drag.normalized().dot(surface.normalized()), 1.0 - 1e-9);
 }
 
-// apply() sums the atoms on the last run's threads once there are enough of them: every atom's
-// sum is the same bits as on one thread (each atom's contributions, in partner order, are its
-// own), also for contributions made in any order and partners repeated (two images).
-TEST(InteractionEngine, ApplyOnSeveralThreadsSumsEveryAtomAsOnOne) {
-  const int atoms = 1000, tasks = 3500;
+// apply() against a direct sum: each atom's sides (a: force_a, torque_a; b: -force_a,
+// torque_b) in partner order, ties (partners repeated: two images) in task order, a before b;
+// tasks without recipients add nothing. Values of many magnitudes, so any other order changes
+// the bits; recipients named on any thread (the run's, in any order) or after it.
+TEST(InteractionEngine, ApplySumsEachAtomInPartnerThenTaskOrder) {
+  const int atoms = 300, tasks = 2000;
   std::vector<std::array<double, 9>> values;
   std::vector<std::array<long long, 4>> names; // a, partner of a, b, partner of b
   std::uint64_t state = 12345;
-  auto next = [&]() { // a fixed sequence: the same tasks for every run
+  auto next = [&]() { // a fixed sequence
     state = state * 6364136223846793005ULL + 1442695040888963407ULL;
     return static_cast<double>(state >> 11) * 0x1.0p-53;
   };
   for (int k = 0; k < tasks; ++k) {
-    std::array<long long, 4> n;
-    for (long long &v : n)
-      v = static_cast<long long>(next() * atoms) - (next() < 0.1 ? atoms : 0); // some -1: none
-    names.push_back(n);
+    const bool none_a = next() < 0.1, none_b = next() < 0.2;
+    names.push_back({none_a ? -1 : static_cast<long long>(next() * atoms),
+                     static_cast<long long>(next() * 7),
+                     none_b ? -1 : static_cast<long long>(next() * atoms),
+                     static_cast<long long>(next() * 7)});
     std::array<double, 9> v;
     for (double &x : v)
       x = (next() - 0.5) * std::pow(10.0, static_cast<int>(next() * 30) - 15);
     values.push_back(v);
   }
-  auto apply_on = [&](int threads) {
+  // The reference: every side as (atom, partner, task, side), stably sorted, summed in order.
+  struct Side {
+    long long atom, partner;
+    int task, side;
+  };
+  std::vector<Side> sides;
+  for (int k = 0; k < tasks; ++k)
+    for (int side = 0; side < 2; ++side)
+      if (names[k][2 * side] >= 0)
+        sides.push_back({names[k][2 * side], names[k][2 * side + 1], k, side});
+  std::stable_sort(sides.begin(), sides.end(), [](const Side &x, const Side &y) {
+    return x.atom != y.atom ? x.atom < y.atom : x.partner < y.partner;
+  });
+  std::vector<double> expected(6 * atoms, 0.0);
+  for (const Side &c : sides)
+    for (int d = 0; d < 3; ++d) {
+      const double f = values[c.task][d];
+      expected[3 * c.atom + d] += c.side == 0 ? f : -f;
+      expected[3 * atoms + 3 * c.atom + d] += values[c.task][3 + 3 * c.side + d];
+    }
+  for (const int threads : {1, 3}) {
     tri::InteractionEngine engine;
     engine.run(tasks, threads, [&](std::size_t k, tri::InteractionScratch &, tri::ContactStats &) {
       tri::PairForceResult r;
       r.force_a = Vector3d(values[k][0], values[k][1], values[k][2]);
       r.torque_a = Vector3d(values[k][3], values[k][4], values[k][5]);
       r.torque_b = Vector3d(values[k][6], values[k][7], values[k][8]);
+      if (k % 2 == 0) // half named on the run's threads, the rest after it, last first
+        engine.set_recipients(k, static_cast<int>(names[k][0]), names[k][1],
+                              static_cast<int>(names[k][2]), names[k][3]);
       return r;
     });
-    for (std::size_t k = 0; k < names.size(); ++k) // partners repeat: ties in task order
-      engine.set_recipients(k, static_cast<int>(std::max(-1LL, names[k][0])), names[k][1] % 7,
-                            static_cast<int>(std::max(-1LL, names[k][2])), names[k][3] % 7);
-    std::vector<double> f(3 * atoms, 0.0), t(3 * atoms, 0.0);
+    for (int k = tasks - 1; k >= 0; --k)
+      if (k % 2 == 1)
+        engine.set_recipients(k, static_cast<int>(names[k][0]), names[k][1],
+                              static_cast<int>(names[k][2]), names[k][3]);
+    std::vector<double> ft(6 * atoms, 0.0);
     std::vector<double *> frows(atoms), trows(atoms);
     for (int a = 0; a < atoms; ++a) {
-      frows[a] = &f[3 * a];
-      trows[a] = &t[3 * a];
+      frows[a] = &ft[3 * a];
+      trows[a] = &ft[3 * atoms + 3 * a];
     }
     engine.apply(frows.data(), trows.data());
-    f.insert(f.end(), t.begin(), t.end());
-    return f;
-  };
-  const std::vector<double> one = apply_on(1);
-  EXPECT_EQ(one, apply_on(2));
-  EXPECT_EQ(one, apply_on(4));
-  EXPECT_NE(one, std::vector<double>(one.size(), 0.0));
+    EXPECT_EQ(ft, expected) << threads << " threads";
+  }
+  EXPECT_NE(expected, std::vector<double>(expected.size(), 0.0));
 }
