@@ -89,15 +89,14 @@ inline Eigen::Vector3d angular_velocity_unit(const Eigen::Quaterniond &q,
 
 // rotate_free for n particles at once, vectorised across them (fix tri/nve's loop), in
 // structure-of-arrays form: q = (qw, qx, qy, qz) advanced in place, bit for bit as rotate_free
-// would; L (space frame) unchanged by the step; principal moments i0, i1, i2 and their
-// inverses v0, v1, v2 (1.0 / i_k, which the caller keeps: a division per moment and step is
-// a large part of this loop); and the angular velocity of the advanced state,
-// (wx, wy, wz) = angular_velocity_unit(q', L, (v0, v1, v2)) bit for bit.
-// `scratch` holds n ints. All arrays of length n, not aliased.
+// would; L (space frame) unchanged by the step; the inverses v0, v1, v2 of the principal moments
+// (1.0 / I_k, which the caller keeps: the rotor needs no division by a moment); and the angular
+// velocity of the advanced state, (wx, wy, wz) = angular_velocity_unit(q', L, (v0, v1, v2)) bit
+// for bit. `scratch` holds n ints. All arrays of length n, not aliased.
 void rotate_free_many(int n, double *qw, double *qx, double *qy, double *qz, const double *lx,
-                      const double *ly, const double *lz, const double *i0, const double *i1,
-                      const double *i2, const double *v0, const double *v1, const double *v2,
-                      double dt, double *wx, double *wy, double *wz, int *scratch);
+                      const double *ly, const double *lz, const double *v0, const double *v1,
+                      const double *v2, double dt, double *wx, double *wy, double *wz,
+                      int *scratch);
 
 // Inverse of angular_velocity: L_space = R diag(I) R^T omega_space (e.g. to start a particle
 // from a LIGGGHTS `omega`).

@@ -50,10 +50,8 @@ void FixTriNVE::compute_mass_properties(int i, MassProperties &m) {
   m.rmass = atom->rmass[i];
   m.dtfm = dtf_ / m.rmass;
   const Eigen::Vector3d inertia = particles_->principal_inertia(i);
-  for (int k = 0; k < 3; ++k) {
-    m.inertia[k] = inertia[k];
+  for (int k = 0; k < 3; ++k)
     m.inverse[k] = 1.0 / inertia[k];
-  }
 }
 
 // omega is authoritative only where it no longer matches the angular momentum exactly, i.e.
@@ -123,7 +121,6 @@ void FixTriNVE::initial_integrate(int) {
       b[(Batch::qw + c) * stride + n] = q[c];
     for (int c = 0; c < 3; ++c) {
       b[(Batch::lx + c) * stride + n] = l[c];
-      b[(Batch::i0 + c) * stride + n] = m.inertia[c];
       b[(Batch::v0 + c) * stride + n] = m.inverse[c];
     }
     ++n;
@@ -131,9 +128,7 @@ void FixTriNVE::initial_integrate(int) {
   tri::rotate_free_many(n, rotor_.column(Batch::qw), rotor_.column(Batch::qx),
                         rotor_.column(Batch::qy), rotor_.column(Batch::qz),
                         rotor_.column(Batch::lx), rotor_.column(Batch::ly),
-                        rotor_.column(Batch::lz), rotor_.column(Batch::i0),
-                        rotor_.column(Batch::i1), rotor_.column(Batch::i2),
-                        rotor_.column(Batch::v0), rotor_.column(Batch::v1),
+                        rotor_.column(Batch::lz), rotor_.column(Batch::v0), rotor_.column(Batch::v1),
                         rotor_.column(Batch::v2), dtv_, rotor_.column(Batch::wx),
                         rotor_.column(Batch::wy), rotor_.column(Batch::wz), rotor_.large.data());
   double **omega = atom->omega;
@@ -151,7 +146,7 @@ void FixTriNVE::RotorBatch::resize(int n) {
   const std::size_t m = static_cast<std::size_t>(n);
   if (stride < m) {
     // Whole cache lines, plus one: columns a power of two apart (512 atoms: 4 KiB) would all
-    // fall into the same L1 set, and the batch's 16 columns would evict each other.
+    // fall into the same L1 set, and the batch's 13 columns would evict each other.
     stride = (m + 7) / 8 * 8 + 8;
     data.resize(columns * stride);
     atom.resize(stride); // every array holds `stride` atoms: n <= stride is all a step checks

@@ -30,8 +30,8 @@ private:
   double dtv_ = 0.0, dtf_ = 0.0;
   void kick_rotation(int i, double dt);
   void sync_omega(int i); // omega := angular velocity implied by q and L
-  // What a half step needs of an atom's mass: dtf / rmass, the principal moments
-  // (FixTriParticles::principal_inertia) and their inverses. They are a function of the shape,
+  // What a half step needs of an atom's mass: dtf / rmass and the inverses of the principal
+  // moments (FixTriParticles::principal_inertia). They are a function of the shape,
   // rmass and dtf alone, and the atoms of one shape nearly always share one rmass (density *
   // volume), so they are kept per shape for the rmass last seen and reused wherever an atom's
   // rmass equals it (`set mass` atoms get theirs computed by the same expressions): the bits of
@@ -40,7 +40,7 @@ private:
   // tri/particles gives it in init() or in the pre_force of the step the atom arrives.
   struct MassProperties {
     double rmass = std::numeric_limits<double>::quiet_NaN(); // NaN: equal to no rmass
-    double dtfm = 0.0, inertia[3] = {0.0, 0.0, 0.0}, inverse[3] = {0.0, 0.0, 0.0};
+    double dtfm = 0.0, inverse[3] = {0.0, 0.0, 0.0};
   };
   std::vector<MassProperties> mass_cache_; // per shape
   const MassProperties &mass_properties(int i, double rmass); // rmass: atom->rmass[i]
@@ -49,7 +49,7 @@ private:
   // tri::rotate_free_many: one column of `stride` doubles per quantity (kept between steps: no
   // allocation once grown).
   struct RotorBatch {
-    enum Column { qw, qx, qy, qz, lx, ly, lz, i0, i1, i2, v0, v1, v2, wx, wy, wz, columns };
+    enum Column { qw, qx, qy, qz, lx, ly, lz, v0, v1, v2, wx, wy, wz, columns };
     std::vector<double> data;
     std::size_t stride = 0;
     std::vector<int> atom, large;

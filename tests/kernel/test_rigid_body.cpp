@@ -270,9 +270,8 @@ TEST(RigidBody, BatchedRotorGivesEachAtomTheSingleRotorsBits) {
       std::vector<int> large(size);
       for (int step = 0; step < 3; ++step) {
         tri::rotate_free_many(size, qw.data(), qx.data(), qy.data(), qz.data(), lx.data(),
-                              ly.data(), lz.data(), i0.data(), i1.data(), i2.data(), v0.data(),
-                              v1.data(), v2.data(), dt, wx.data(), wy.data(), wz.data(),
-                              large.data());
+                              ly.data(), lz.data(), v0.data(), v1.data(), v2.data(), dt,
+                              wx.data(), wy.data(), wz.data(), large.data());
       }
       for (int j = 0; j < size; ++j) {
         const int k = first + j;
