@@ -8,8 +8,6 @@ triangles per rock (one thread, one rank), each repetition a dot, the median a l
 RESULTS: run_pile.py's WORK/results_LABEL.json (every label with more than one mesh size of
 the settled pile is drawn). Standard library plus Debian's matplotlib.
 """
-import argparse
-import json
 import os
 import sys
 from statistics import median
@@ -32,20 +30,7 @@ def by_resolution(results):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("results", nargs="+")
-    ap.add_argument("--png", required=True)
-    ap.add_argument("--title", default="")
-    a = ap.parse_args()
-    results = []
-    for path in a.results:
-        results += json.load(open(path))
-    lines = by_resolution(results)
-    if not lines:
-        sys.exit("no label with more than one mesh size of the settled pile")
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    a, lines, plt = run_pile.plot_setup(__doc__, by_resolution, "no label with more than one mesh size of the settled pile")
     fig, (left, right) = plt.subplots(1, 2, figsize=(10.0, 4.2))
     top = 0.0
     for (label, n), line in sorted(lines.items()):

@@ -9,8 +9,6 @@ largest thread count drawn thin.
 RESULTS: run_pile.py's WORK/results_LABEL.json (any number; every label with more than one
 thread count is drawn). Standard library plus Debian's matplotlib.
 """
-import argparse
-import json
 import os
 import sys
 from statistics import median
@@ -36,20 +34,7 @@ def scaling(results):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("results", nargs="+")
-    ap.add_argument("--png", required=True)
-    ap.add_argument("--title", default="")
-    a = ap.parse_args()
-    results = []
-    for path in a.results:
-        results += json.load(open(path))
-    lines = scaling(results)
-    if not lines:
-        sys.exit("no label with more than one thread count")
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    a, lines, plt = run_pile.plot_setup(__doc__, scaling, "no label with more than one thread count")
     fig, ax = plt.subplots(figsize=(6.4, 4.6))
     top = max(t for line in lines.values() for t, _, _ in line)
     ax.plot([1, top], [1, top], color="0.6", lw=1, ls="--", label="ideal")

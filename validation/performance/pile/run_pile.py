@@ -291,6 +291,33 @@ def summarise(results):
     return rows
 
 
+def pyplot():
+    """Debian's matplotlib, drawing to files (imported only when a plot is asked for)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    return plt
+
+
+def plot_setup(doc, select, empty):
+    """The plotting scripts' start: their command line (RESULTS.json [...] --png PNG [--title
+    TITLE]), the results of every file, in order, passed through select(results) -> lines (the
+    script ends with `empty` when there are none), and pyplot. Returns (args, lines, plt)."""
+    ap = argparse.ArgumentParser(description=doc.splitlines()[0])
+    ap.add_argument("results", nargs="+")
+    ap.add_argument("--png", required=True)
+    ap.add_argument("--title", default="")
+    a = ap.parse_args()
+    results = []
+    for path in a.results:
+        with open(path) as f:
+            results += json.load(f)
+    lines = select(results)
+    if not lines:
+        sys.exit(empty)
+    return a, lines, pyplot()
+
+
 def median(v):
     v = sorted(v)
     return v[len(v) // 2] if len(v) % 2 else 0.5 * (v[len(v) // 2 - 1] + v[len(v) // 2])
@@ -327,9 +354,7 @@ def table(results):
 
 
 def plot(results, path):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot()
     rows = summarise(results)
     labels = [l for l in labels_in_order(results) if any(k[0] == l for k in rows)]
     phases = ["free", "forming", "settled", "gas"]  # gas: --geometry gas
@@ -388,9 +413,7 @@ SPEEDUP_FLOORS = {"threads": 1.8, "ranks": 1.7}
 def plot_floors(results, path):
     """Every repetition against the floors: each run's ratios to spheres (1x1) per deck and
     phase, and the speed-ups of threads and ranks over the 1x1 run of the same repetition."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot()
     rows = summarise(results)
     labels = labels_in_order(results)
     cases = sorted({(k[1], k[3], k[4]) for k in rows if k[5] == 1 and k[6] == 1 and rows[k]["ratios"]},
