@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <string>
 
 using namespace tri;
@@ -174,4 +176,35 @@ TEST(PenaltyDistance, ResumedStepsGiveTheLongerRunsBits) {
   PenaltyBlockResult r;
   EXPECT_THROW(penalty_block_resume(5, block, r.z, PenaltyParameters{}, 0.0, r),
                std::invalid_argument);
+}
+
+// A tiny triangle against a vertex of a large one (fuzz_triangle_distance,
+// corpus/fuzz_triangle_distance/regression_penalty_lower_bound_at_touch): the brute force
+// reports the pair as touching (distance 0, within kTouchRatio x the longest edge), while the
+// penalty's lower bound, a separating-axis gap valid for any axis, is 1.25e-9 > 0. Both are
+// right: a touching pair's true distance may be up to the touch tolerance, so the bound may be
+// too, and no further (the fuzz check allowed only rounding above 0 until session 21).
+TEST(PenaltyDistance, LowerBoundOfATouchingPairStaysWithinTheTouchTolerance) {
+  const Eigen::Vector3d a[3] = {{0.244140625, 0, -905.09033203125},
+                                {371.64306640625, -765.350341796875, 108.306884765625},
+                                {0.396728515625, 0, 0}};
+  const Eigen::Vector3d b[3] = {{0.244140625, 0, -905.09032421874997},
+                                {0.24324999999999999, -0.00029687499999999994, -905.09033203125},
+                                {0.244140625, 0, -905.09031640625005}};
+  const TrianglePairDistance ref = triangle_distance(a, b);
+  EXPECT_TRUE(ref.intersecting);
+  EXPECT_EQ(ref.distance, 0.0);
+  double longest = 0.0;
+  for (int k = 0; k < 3; ++k)
+    longest = std::max({longest, (a[(k + 1) % 3] - a[k]).norm(), (b[(k + 1) % 3] - b[k]).norm()});
+  TrianglePairBlock block;
+  block.set_lane(0, a, b);
+  for (int l = 1; l < kPairLanes; ++l)
+    block.copy_lane(0, l);
+  for (const int iterations : {2, 4, 8}) {
+    PenaltyBlockResult r;
+    penalty_block(iterations, block, PenaltyParameters{}, 1e-9 * 1000.0, r);
+    EXPECT_LE(r.lower[0], kTouchRatio * longest) << iterations << " Newton steps";
+    EXPECT_GE(r.upper[0], r.lower[0]) << iterations << " Newton steps";
+  }
 }
