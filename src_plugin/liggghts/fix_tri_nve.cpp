@@ -128,8 +128,9 @@ void FixTriNVE::initial_integrate(int) {
   tri::rotate_free_many(n, rotor_.column(Batch::qw), rotor_.column(Batch::qx),
                         rotor_.column(Batch::qy), rotor_.column(Batch::qz),
                         rotor_.column(Batch::lx), rotor_.column(Batch::ly),
-                        rotor_.column(Batch::lz), rotor_.column(Batch::v0), rotor_.column(Batch::v1),
-                        rotor_.column(Batch::v2), dtv_, rotor_.column(Batch::wx),
+                        rotor_.column(Batch::lz), rotor_.column(Batch::v0),
+                        rotor_.column(Batch::v1), rotor_.column(Batch::v2), dtv_,
+                        rotor_.column(Batch::wx),
                         rotor_.column(Batch::wy), rotor_.column(Batch::wz), rotor_.large.data());
   double **omega = atom->omega;
   for (int k = 0; k < n; ++k) {
