@@ -75,22 +75,22 @@ private:
   TrianglePairDistance *target_[kPairLanes];
 };
 
-TrianglePairDistance accepted_result(const PenaltyBlockResult &r, int l) {
+// Written field by field into the caller's slot, inlined: built as a value and assigned, the
+// result went through a stack temporary and a second copy of its 104 bytes.
+inline __attribute__((always_inline)) void store_accepted(const PenaltyBlockResult &r, int l,
+                                                          TrianglePairDistance &d) {
   // The normal from the locals, not from the result's fields just stored: read back, those
   // stalled on store forwarding (two 8-byte stores, one 16-byte load).
   const double distance = r.upper[l];
   const Eigen::Vector3d a(r.point_a[0][l], r.point_a[1][l], r.point_a[2][l]);
   const Eigen::Vector3d b(r.point_b[0][l], r.point_b[1][l], r.point_b[2][l]);
-  const Eigen::Vector3d normal = (b - a) / distance;
-  TrianglePairDistance d;
   d.distance = distance;
   d.point_a = a;
   d.point_b = b;
-  d.normal = normal;
+  d.normal = (b - a) / distance;
   d.intersecting = false;
   d.penetration_depth = 0.0;
   d.lower_bound = r.lower[l];
-  return d;
 }
 
 // Penalty's verdict on one lane.
@@ -154,7 +154,7 @@ public:
         brute_force_.add(*a_[l], *b_[l], pair_[l], target_[l]);
         ++counters_.fallbacks;
       } else {
-        *target_[l] = accepted_result(r_, l);
+        store_accepted(r_, l, *target_[l]);
       }
     }
   }
@@ -190,9 +190,13 @@ class PendingFirst {
 public:
   PendingFirst(PendingRetry &again, PendingBruteForce &brute_force, HybridCounters &c)
       : again_(again), brute_force_(brute_force), counters_(c) {}
-  void add(const HybridJob &job, int k) {
+  // Before a job's pairs: flushes the pending lanes if the job's first run differs from theirs.
+  void begin(const HybridJob &job) {
     if (fill_.n > 0 && !same_run(*job_[0], job))
       flush();
+  }
+  // Pair k of the job last begun.
+  void add(const HybridJob &job, int k) {
     job_[fill_.n] = &job;
     index_[fill_.n] = k;
     if (fill_.take(*job.a, job.pairs[k].a, *job.b, job.pairs[k].b))
@@ -209,7 +213,7 @@ public:
       const HybridJob &job = *job_[l];
       const int k = index_[l];
       if (verdict(r_, l, job.settings) != Verdict::NeedsBruteForce) {
-        job.out[k] = accepted_result(r_, l);
+        store_accepted(r_, l, job.out[k]);
       } else if (retries(job.settings)) {
         again_.add(*job.a, *job.b, job.pairs[k], job.settings, job.out + k, r_, l);
       } else {
@@ -280,7 +284,7 @@ void penalty_distances(const TriangleSoA &a, const TriangleSoA &b, const Triangl
         l2 = std::max(
             {l2, (ta[(k + 1) % 3] - ta[k]).squaredNorm(), (tb[(k + 1) % 3] - tb[k]).squaredNorm()});
       if (r.upper[l] > kTouchRatio * std::sqrt(l2)) {
-        out[first + l] = accepted_result(r, l);
+        store_accepted(r, l, out[first + l]);
       } else {
         TrianglePairDistance &d = out[first + l];
         d.distance = 0.0;
@@ -317,7 +321,7 @@ void hybrid_distances(const TriangleSoA &a, const TriangleSoA &b, const Triangle
       run_penalty(first, n);
       for (int l = 0; l < n; ++l) {
         batch_ok &= verdict(r, l, settings) != Verdict::NeedsBruteForce;
-        out[first + l] = accepted_result(r, l);
+        store_accepted(r, l, out[first + l]);
       }
     }
     if (!batch_ok) {
@@ -375,6 +379,7 @@ void hybrid_distances_jobs(const HybridJob *jobs, int num_jobs, HybridCounters &
       prefetch_triangles(jobs[j + 3]);
     const HybridJob &job = jobs[j];
     const bool bounded = job.lower && std::isfinite(job.skip_from);
+    first.begin(job);
     for (int k = 0; k < job.count; ++k) {
       if (bounded && job.lower[k] >= job.skip_from) { // cannot be within the cutoff
         job.out[k].distance = std::numeric_limits<double>::infinity();

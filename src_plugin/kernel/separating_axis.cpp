@@ -6,7 +6,11 @@
 
 namespace tri {
 
-Extent soa_extent(const TriangleSoA &t, const Eigen::Vector3d &n) {
+namespace {
+
+// The vertices' lowest and highest projection on n and, with Magnitude, their largest
+// coordinate (a posed body takes its magnitude from its pose: the loop then skips it).
+template <bool Magnitude> Extent extent_along(const TriangleSoA &t, const Eigen::Vector3d &n) {
   const std::size_t count = t.x.size();
   const double *x = t.x.data(), *y = t.y.data(), *z = t.z.data();
   const double nx = n.x(), ny = n.y(), nz = n.z();
@@ -20,7 +24,8 @@ Extent soa_extent(const TriangleSoA &t, const Eigen::Vector3d &n) {
       const double s = nx * x[i] + ny * y[i] + nz * z[i];
       lo = std::min(lo, s);
       hi = std::max(hi, s);
-      m = std::max(m, std::max(std::fabs(x[i]), std::max(std::fabs(y[i]), std::fabs(z[i]))));
+      if constexpr (Magnitude)
+        m = std::max(m, std::max(std::fabs(x[i]), std::max(std::fabs(y[i]), std::fabs(z[i]))));
     }
     return {lo, hi, m};
   }
@@ -29,15 +34,22 @@ Extent soa_extent(const TriangleSoA &t, const Eigen::Vector3d &n) {
     const double s = nx * x[i] + ny * y[i] + nz * z[i];
     lo = std::min(lo, s);
     hi = std::max(hi, s);
-    m = std::max(m, std::max(std::fabs(x[i]), std::max(std::fabs(y[i]), std::fabs(z[i]))));
+    if constexpr (Magnitude)
+      m = std::max(m, std::max(std::fabs(x[i]), std::max(std::fabs(y[i]), std::fabs(z[i]))));
   }
   return {lo, hi, m};
+}
+
+} // namespace
+
+Extent soa_extent(const TriangleSoA &t, const Eigen::Vector3d &n) {
+  return extent_along<true>(t, n);
 }
 
 Extent posed_extent(const TriangleSoA &frame, const Eigen::Quaterniond &q,
                     const Eigen::Vector3d &x, double radius, const Eigen::Vector3d &n) {
   const Eigen::Vector3d local = q.conjugate() * n;
-  const Extent e = soa_extent(frame, local);
+  const Extent e = extent_along<false>(frame, local);
   const double shift = n.dot(x);
   return {e.lo + shift, e.hi + shift, x.cwiseAbs().maxCoeff() + radius};
 }
