@@ -383,6 +383,7 @@ struct ReductionWorkspace {
     int tri_a, tri_b;
   };
   std::vector<Key> keys;
+  std::vector<Key> sorted_keys; // keys in order (sort_keys: small sets by rank)
   std::vector<Eigen::Vector3d> points; // raw[i].point, for the links of step 1
   LinkScratch links;
   std::vector<int> parent, order, label, cls, absorbed, seeds, alive, group, tally;

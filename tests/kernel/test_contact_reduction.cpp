@@ -351,6 +351,47 @@ TEST(ContactReduction, PermutationOfInputGivesIdenticalOutput) {
   }
 }
 
+// The same for a small set (the reduction ranks up to two dozen contacts instead of sorting
+// them), where a cube lying flat gives contacts tied in overlap, ordered by their triangles;
+// and with one contact given twice (tied in overlap and triangles: the full comparator), whose
+// result must not depend on the order either.
+TEST(ContactReduction, PermutationOfFewTiedContactsGivesIdenticalOutput) {
+  const double gap = 0.3 * kLayer;
+  const Mesh a = cube(kSide, 1, Vector3d(0.0001, -0.0002, 0.5 * kSide + gap));
+  const Mesh b = plane(0.75 * kSide, 1);
+  std::vector<TriangleContact> raw = brute_contacts(a, b, kLayer);
+  ASSERT_GE(raw.size(), 4u);
+  ASSERT_LE(raw.size(), 23u); // within the ranked sizes, also with one contact twice
+  int tied = 0;
+  for (std::size_t i = 1; i < raw.size(); ++i)
+    tied += raw[i].distance == raw[0].distance;
+  ASSERT_GT(tied, 0); // ties in overlap, settled by the triangles
+  const tri::ReductionParams p = params_for(kSide, 1.5 * kSide);
+  const tri::TriangleSoA sa = soa_of(a), sb = soa_of(b);
+  for (int twice = 0; twice < 2; ++twice) {
+    if (twice)
+      raw.push_back(raw[raw.size() / 2]);
+    const auto ref = tri::reduce_contacts(raw, sa, kEps, sb, kEps, p);
+    ASSERT_FALSE(ref.empty());
+    std::mt19937 rng(777 + twice);
+    for (int trial = 0; trial < 8; ++trial) {
+      std::shuffle(raw.begin(), raw.end(), rng);
+      const auto out = tri::reduce_contacts(raw, sa, kEps, sb, kEps, p);
+      ASSERT_EQ(out.size(), ref.size());
+      for (std::size_t i = 0; i < out.size(); ++i) {
+        for (int k = 0; k < 3; ++k) {
+          EXPECT_EQ(out[i].point[k], ref[i].point[k]);
+          EXPECT_EQ(out[i].normal[k], ref[i].normal[k]);
+        }
+        EXPECT_EQ(out[i].overlap, ref[i].overlap);
+        EXPECT_EQ(out[i].num_merged, ref[i].num_merged);
+        EXPECT_EQ(out[i].tri_a, ref[i].tri_a);
+        EXPECT_EQ(out[i].tri_b, ref[i].tri_b);
+      }
+    }
+  }
+}
+
 // Hand-made contacts test the clustering, not the placement: their triangles are taken
 // perpendicular to each other (a's in planes x = const, b's in planes y = const), so that no
 // member has a contact polygon and each keeps its midpoint, weighted by overlap (the rule for
