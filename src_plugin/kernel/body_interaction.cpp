@@ -94,9 +94,12 @@ Eigen::Vector3d nearest_face_normal(const TriangleSoA &t, const Eigen::Vector3d 
 // A new axis for the cache after a full search without contacts, the first of these that
 // proves the gap: between the closest points of the triangle pairs it tested; between the
 // centres; against the face of b nearest a's centre; along the face of a nearest b's centre
-// (a particle over a wall patch: the patch's normal). Zero if none does.
+// (a particle over a wall patch: the patch's normal). Zero if none does; `gap` receives the
+// gap the returned axis proves (proven_gap; its rounding slack covers the axis's
+// normalisation).
 Eigen::Vector3d new_separating_axis(const Body &a, const Body &b, double cutoff,
-                                    const TrianglePairDistance *tested, int num_tested) {
+                                    const TrianglePairDistance *tested, int num_tested,
+                                    double &gap) {
   const TriangleSoA &ta = *a.triangles, &tb = *b.triangles;
   double best = std::numeric_limits<double>::infinity();
   Eigen::Vector3d closest = Eigen::Vector3d::Zero();
@@ -107,16 +110,21 @@ Eigen::Vector3d new_separating_axis(const Body &a, const Body &b, double cutoff,
       closest = r.point_b - r.point_a;
     }
   }
+  // The gap the axis proves is kept with it: measured here, not a second time by the caller.
+  const auto separates = [&](const Eigen::Vector3d &axis) {
+    gap = proven_gap(ta, tb, axis, cutoff);
+    return gap >= cutoff;
+  };
   const Eigen::Vector3d centres = b.state.x - a.state.x;
   for (const Eigen::Vector3d &axis : {closest, centres}) {
-    if (separated_along(ta, tb, axis, cutoff))
+    if (separates(axis))
       return axis.normalized();
   }
   const Eigen::Vector3d face_b = -nearest_face_normal(tb, a.state.x);
-  if (separated_along(ta, tb, face_b, cutoff))
+  if (separates(face_b))
     return face_b.normalized();
   const Eigen::Vector3d face_a = nearest_face_normal(ta, b.state.x);
-  if (separated_along(ta, tb, face_a, cutoff))
+  if (separates(face_a))
     return face_a.normalized();
   return Eigen::Vector3d::Zero();
 }
@@ -338,8 +346,9 @@ PairForceResult after_kernel(const Body &a, const Body &b, const InteractionSett
   const RigidPose *pose_a = &a.pose, *pose_b = b.is_wall() ? nullptr : &b.pose;
   CandidateCache *kept = s.coherence > 0.0 ? cache.candidates : nullptr;
   if (cache.axis && cache.update) {
+    double gap = -std::numeric_limits<double>::infinity();
     const Eigen::Vector3d axis = scratch.triangle_contacts.empty()
-                                     ? new_separating_axis(a, b, cutoff, tested, num_tested)
+                                     ? new_separating_axis(a, b, cutoff, tested, num_tested, gap)
                                      : Eigen::Vector3d::Zero();
     for (int d = 0; d < 3; ++d)
       cache.axis[d] = axis[d];
@@ -347,8 +356,7 @@ PairForceResult after_kernel(const Body &a, const Body &b, const InteractionSett
       kept->clear_gap();
     if (kept && axis != Eigen::Vector3d::Zero()) {
       const Eigen::Vector3d n = axis / axis.norm(); // the direction proven_gap projects on
-      kept->keep_gap(pose_a, *a.triangles, pose_b, *b.triangles,
-                     proven_gap(*a.triangles, *b.triangles, axis, cutoff), n);
+      kept->keep_gap(pose_a, *a.triangles, pose_b, *b.triangles, gap, n);
     }
   }
   if (scratch.triangle_contacts.empty()) { // the reduction of nothing needs no parameters
