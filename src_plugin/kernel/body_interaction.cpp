@@ -110,21 +110,16 @@ Eigen::Vector3d new_separating_axis(const Body &a, const Body &b, double cutoff,
       closest = r.point_b - r.point_a;
     }
   }
-  // The gap the axis proves is kept with it: measured here, not a second time by the caller.
-  const auto separates = [&](const Eigen::Vector3d &axis) {
-    gap = proven_gap(ta, tb, axis, cutoff);
-    return gap >= cutoff;
-  };
   const Eigen::Vector3d centres = b.state.x - a.state.x;
   for (const Eigen::Vector3d &axis : {closest, centres}) {
-    if (separates(axis))
+    if (separated_along(ta, tb, axis, cutoff, &gap))
       return axis.normalized();
   }
   const Eigen::Vector3d face_b = -nearest_face_normal(tb, a.state.x);
-  if (separates(face_b))
+  if (separated_along(ta, tb, face_b, cutoff, &gap))
     return face_b.normalized();
   const Eigen::Vector3d face_a = nearest_face_normal(ta, b.state.x);
-  if (separates(face_a))
+  if (separated_along(ta, tb, face_a, cutoff, &gap))
     return face_a.normalized();
   return Eigen::Vector3d::Zero();
 }

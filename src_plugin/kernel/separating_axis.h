@@ -57,10 +57,13 @@ double proven_gap(const TriangleSoA &a, const TriangleSoA &b, const Eigen::Vecto
 double proven_gap(const Extent &a, const Extent &b, double cutoff);
 
 // True when `axis` (pointing from a towards b) proves every triangle pair of a and b at least
-// `cutoff` apart.
+// `cutoff` apart; `gap`, if given, receives the proven gap (for a cache that keeps it).
 inline bool separated_along(const TriangleSoA &a, const TriangleSoA &b, const Eigen::Vector3d &axis,
-                            double cutoff) {
-  return proven_gap(a, b, axis, cutoff) >= cutoff;
+                            double cutoff, double *gap = nullptr) {
+  const double g = proven_gap(a, b, axis, cutoff);
+  if (gap)
+    *gap = g;
+  return g >= cutoff;
 }
 
 } // namespace tri
