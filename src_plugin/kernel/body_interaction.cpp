@@ -283,7 +283,7 @@ PairForceResult body_interaction(const Body &a, const Body &b, const Interaction
     // The kernel skips the kept pairs the motion cannot have brought within the cutoff.
     CandidateCache &kc = *cache.candidates;
     const double skip = kc.skip_from(pose_a, *a.triangles, pose_b, *b.triangles, cutoff);
-    if (scratch.defer && can_queue_candidates(s.distance)) {
+    if (scratch.defer && can_queue_candidates(s.distance, kc.count())) {
       scratch.jobs.push_back(queue_candidates(*a.triangles, a.reach_epsilon(b), *b.triangles,
                                               b.reach_epsilon(a), s.distance, kc.pairs(),
                                               kc.count(), stats, kc.lower_bounds(), skip));
@@ -309,7 +309,7 @@ PairForceResult body_interaction(const Body &a, const Body &b, const Interaction
     }
     const int count =
         find_candidate_pairs(*a.triangles, *b.triangles, margin, s.distance, scratch.distance, skip);
-    if (count > 0 && scratch.defer && can_queue_candidates(s.distance)) {
+    if (count > 0 && scratch.defer && can_queue_candidates(s.distance, count)) {
       // The search's list is overwritten by the next task's: a copy, pointed at in run_jobs.
       const TrianglePairIndex *found = scratch.distance.pairs.data();
       scratch.job_origins.push_back(

@@ -975,23 +975,30 @@ void sort_keys(std::vector<ReductionWorkspace::Key> &keys, const TriangleContact
     return;
   }
   // Both triangle indices in one integer (both are >= 0: reduce checked them), ordered as the
-  // pair (tri_a, tri_b).
-  std::uint64_t pair[kRankSortMax];
-  for (std::size_t i = 0; i < n; ++i)
-    pair[i] = static_cast<std::uint64_t>(static_cast<std::uint32_t>(keys[i].tri_a)) << 32 |
-              static_cast<std::uint32_t>(keys[i].tri_b);
-  int rank[kRankSortMax];
-  int ties = 0;
+  // pair (tri_a, tri_b); signed (below 2^63), so that the compares vectorise. The overlaps and
+  // pairs in arrays of their own: the count below then runs over all j in SIMD registers.
+  alignas(64) double overlap[kRankSortMax];
+  alignas(64) std::int64_t pair[kRankSortMax];
   for (std::size_t i = 0; i < n; ++i) {
-    int r = 0;
-    for (std::size_t j = 0; j < n; ++j) {
-      const bool same_overlap = keys[j].overlap == keys[i].overlap;
-      r += (keys[j].overlap > keys[i].overlap) | (same_overlap & (pair[j] < pair[i]));
-      ties += same_overlap & (pair[j] == pair[i]);
-    }
-    rank[i] = r;
+    overlap[i] = keys[i].overlap;
+    pair[i] = static_cast<std::int64_t>(static_cast<std::uint64_t>(
+                  static_cast<std::uint32_t>(keys[i].tri_a)) << 32 |
+              static_cast<std::uint32_t>(keys[i].tri_b));
   }
-  if (ties != static_cast<int>(n)) { // a key ties with another than itself
+  int rank[kRankSortMax];
+  std::int64_t ties = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double oi = overlap[i];
+    const std::int64_t pi = pair[i];
+    std::int64_t r = 0;
+    for (std::size_t j = 0; j < n; ++j) {
+      const bool same_overlap = overlap[j] == oi;
+      r += (overlap[j] > oi) | (same_overlap & (pair[j] < pi));
+      ties += same_overlap & (pair[j] == pi);
+    }
+    rank[i] = static_cast<int>(r);
+  }
+  if (ties != static_cast<std::int64_t>(n)) { // a key ties with another than itself
     std::sort(keys.begin(), keys.end(), before);
     return;
   }

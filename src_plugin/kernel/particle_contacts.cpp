@@ -183,9 +183,9 @@ void contacts_among_candidates(const TriangleSoA &a, double eps_a, const Triangl
   HybridCounters counters;
   // Work is split only at multiples of `unit`, so batches stay whole and blocks full.
   const int unit = opt.kernel == DistanceKernel::BatchedHybrid ? opt.batch_size : kPairLanes;
-  switch (opt.parallel) {
+  switch (shares_among_threads(opt, count) ? opt.parallel : ContactParallelism::None) {
   case ContactParallelism::None:
-    if (lower && can_queue_candidates(opt)) { // the one job queue_candidates would make
+    if (lower && can_queue_candidates(opt, count)) { // the one job queue_candidates would make
       const HybridJob job{&a, &b, pairs, count, hs, results, lower, skip_from};
       hybrid_distances_jobs(&job, 1, counters);
     } else {
@@ -232,8 +232,12 @@ void contacts_among_candidates(const TriangleSoA &a, double eps_a, const Triangl
   contacts_from_results(pairs, results, count, cutoff, out, stats);
 }
 
-bool can_queue_candidates(const ContactOptions &opt) {
-  return opt.kernel == DistanceKernel::Hybrid && opt.parallel == ContactParallelism::None;
+bool shares_among_threads(const ContactOptions &opt, int count) {
+  return opt.parallel != ContactParallelism::None && count >= kMinSharedPairs;
+}
+
+bool can_queue_candidates(const ContactOptions &opt, int count) {
+  return opt.kernel == DistanceKernel::Hybrid && !shares_among_threads(opt, count);
 }
 
 HybridJob queue_candidates(const TriangleSoA &a, double eps_a, const TriangleSoA &b, double eps_b,

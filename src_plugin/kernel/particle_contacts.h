@@ -15,7 +15,14 @@
 // unchecked (distance_kernels.h) and for studies only.
 // Threads: results (values and order) are identical for every parallel mode and thread
 // count; `parallel` opens an OpenMP parallel region inside the call, so callers that
-// parallelise over particle pairs pass ContactParallelism::None.
+// parallelise over particle pairs pass ContactParallelism::None. Only a list of at least
+// kMinSharedPairs candidates is shared among threads (shares_among_threads): a particle pair
+// of small rocks has about ten, a few microseconds of work, less than the region's start and
+// join on two threads, and each thread's part would fill a fraction of a kernel block. Shorter
+// lists run on the calling thread as ContactParallelism::None runs them, queued with other
+// pairs' where the caller batches kernels (can_queue_candidates). The threshold is a fixed
+// count, not a function of the thread count, so a pair takes the same path on any number of
+// threads.
 #pragma once
 
 #include "distance_kernels.h"
@@ -36,6 +43,10 @@ enum class DistanceKernel {
   BatchedHybrid,    // penalty; a batch with one uncertified pair recomputed by brute force
   BruteForceScalar, // brute force one pair at a time (the reference; for benchmarks)
 };
+
+// Candidates from which on a list is shared among the threads of `parallel` (header): 16
+// blocks of kPairLanes, 8 per thread on two, each a microsecond or so of penalty steps.
+constexpr int kMinSharedPairs = 256;
 
 enum class ContactParallelism {
   None,          // the calling thread does everything
@@ -146,9 +157,12 @@ void contacts_among_candidates(const TriangleSoA &a, double eps_a, const Triangl
 // together (hybrid_distances_jobs, interaction_engine.h): queue_candidates counts the pairs in
 // `stats` and returns the hybrid job (its `out` left for the caller to point at `count`
 // results); after the run, contacts_from_results appends the pairs closer than eps_a + eps_b,
-// as contacts_among_candidates does. Only for the unbatched hybrid without threads inside
-// the pair (can_queue_candidates); the contacts are bitwise contacts_among_candidates'.
-bool can_queue_candidates(const ContactOptions &opt);
+// as contacts_among_candidates does. Only for the unbatched hybrid on lists that are not
+// shared among threads (can_queue_candidates); the contacts are bitwise
+// contacts_among_candidates'.
+bool can_queue_candidates(const ContactOptions &opt, int count);
+// Whether `count` candidates are shared among threads under opt.parallel (header, Threads).
+bool shares_among_threads(const ContactOptions &opt, int count);
 // How far above the exact distance a contact's distance from this kernel may lie (m): the
 // hybrid's certified tolerance, 0 for brute force, infinity for the unchecked penalty.
 double certified_tolerance(const ContactOptions &opt, double eps_a, double eps_b);

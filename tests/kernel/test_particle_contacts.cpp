@@ -248,3 +248,56 @@ TEST(ParticleContacts, TightCullGivesTheBoxCullsContactsWithFewerPairs) {
   }
   EXPECT_LT(tested_tight, 0.85 * tested_boxes);
 }
+
+// `parallel` shares a list among threads only from kMinSharedPairs candidates on: a short one
+// (a particle pair of small rocks) runs on the calling thread as ContactParallelism::None runs
+// it -- the hybrid queued with other pairs' kernels, kept lower bounds skipping what they rule
+// out -- on any thread count, so `parallel triangles` is not slower than `parallel none` on a
+// pile. Seen from outside: a short list whose kept bounds rule out every pair tests none of
+// them in every mode; a long one in a shared mode tests them all (the shared path does not
+// take bounds), with the contacts of ContactParallelism::None.
+TEST(ParticleContacts, OnlyLongListsAreSharedAmongThreads) {
+  const int saved = omp_get_max_threads();
+  omp_set_num_threads(2);
+  const Scene &s = all_scenes().front(); // 20 triangles each: 400 pairs in all
+  std::vector<TrianglePairIndex> all;
+  for (int i = 0; i < s.a.num_triangles(); ++i)
+    for (int j = 0; j < s.b.num_triangles(); ++j)
+      all.push_back({i, j});
+  ASSERT_GE(static_cast<int>(all.size()), kMinSharedPairs);
+  const std::vector<double> ruled_out(all.size(), 1.0); // kept bounds far beyond the cutoff
+  for (auto mode :
+       {ContactParallelism::None, ContactParallelism::TrianglePairs, ContactParallelism::Batches})
+    for (int count : {kMinSharedPairs - 1, kMinSharedPairs}) {
+      ContactOptions opt;
+      opt.parallel = mode;
+      const bool shared = mode != ContactParallelism::None && count >= kMinSharedPairs;
+      EXPECT_EQ(shares_among_threads(opt, count), shared);
+      EXPECT_EQ(can_queue_candidates(opt, count), !shared);
+      opt.kernel = DistanceKernel::BatchedHybrid;
+      EXPECT_FALSE(can_queue_candidates(opt, count)); // its batches decide: never queued
+      opt.kernel = DistanceKernel::Hybrid;
+      ContactWorkspace ws;
+      ContactStats stats;
+      std::vector<TriangleContact> out;
+      contacts_among_candidates(s.a, s.eps, s.b, s.eps, opt, all.data(), count, out, stats, ws,
+                                ruled_out.data(), 0.5);
+      EXPECT_EQ(stats.triangle_pairs_tested, shared ? count : 0)
+          << "mode " << static_cast<int>(mode) << ", " << count << " candidates";
+      // Without bounds every mode finds None's contacts, bit for bit.
+      ContactOptions none;
+      ContactWorkspace ws_none, ws_mode;
+      ContactStats st_none, st_mode;
+      std::vector<TriangleContact> ref, got;
+      contacts_among_candidates(s.a, s.eps, s.b, s.eps, none, all.data(), count, ref, st_none,
+                                ws_none);
+      contacts_among_candidates(s.a, s.eps, s.b, s.eps, opt, all.data(), count, got, st_mode,
+                                ws_mode);
+      ASSERT_EQ(ref.size(), got.size());
+      for (std::size_t k = 0; k < ref.size(); ++k) {
+        EXPECT_EQ(ref[k].distance, got[k].distance);
+        EXPECT_EQ(ref[k].point_a, got[k].point_a);
+      }
+    }
+  omp_set_num_threads(saved);
+}
