@@ -153,13 +153,13 @@ bool walls_apart_by_planes(const TriangleSoA &particle, const TriangleSoA &wall,
 
 namespace {
 
-// What follows the distance kernel, once scratch.triangle_contacts holds the pair's triangle
-// contacts (`tested`: the kernel's results on all its pairs): the kept axis, the reduction,
-// the force.
+// What follows the distance kernel (`tested`: its results on all the pair's triangle pairs
+// `pairs`; the `num_contacts` of them closer than the cutoff are the triangle contacts, read in
+// place): the kept axis, the reduction, the force.
 PairForceResult after_kernel(const Body &a, const Body &b, const InteractionSettings &s,
                              double dt, double *history, InteractionScratch &scratch,
-                             SeparationCache cache, const TrianglePairDistance *tested,
-                             int num_tested);
+                             SeparationCache cache, const TrianglePairIndex *pairs,
+                             const TrianglePairDistance *tested, int num_tested, int num_contacts);
 
 // The second call for a pair whose job the engine ran (InteractionScratch::resume_job).
 PairForceResult resume_after_kernel(const Body &a, const Body &b, const InteractionSettings &s,
@@ -170,15 +170,18 @@ PairForceResult resume_after_kernel(const Body &a, const Body &b, const Interact
   const InteractionScratch::JobOrigin &origin = scratch.job_origins[j];
   const TrianglePairDistance *results = scratch.job_results.data() + scratch.job_offsets[j];
   const double cutoff = a.reach_epsilon(b) + b.reach_epsilon(a);
-  scratch.triangle_contacts.clear();
-  contacts_from_results(job.pairs, results, job.count, cutoff, scratch.triangle_contacts, stats);
+  int num_contacts = 0; // as contacts_from_results counts them
+  for (int k = 0; k < job.count; ++k)
+    num_contacts += results[k].distance < cutoff;
+  stats.contacts += num_contacts;
   if (origin.keep)
     cache.candidates->keep(&a.pose, *a.triangles, b.is_wall() ? nullptr : &b.pose, *b.triangles,
                            cutoff, origin.reach, job.pairs, job.count, results);
   else if (origin.pairs_offset < 0) // a kept list's
     cache.candidates->rebase(&a.pose, *a.triangles, b.is_wall() ? nullptr : &b.pose,
                              *b.triangles, results);
-  return after_kernel(a, b, s, dt, history, scratch, cache, results, job.count);
+  return after_kernel(a, b, s, dt, history, scratch, cache, job.pairs, results, job.count,
+                      num_contacts);
 }
 
 } // namespace
@@ -294,6 +297,9 @@ PairForceResult body_interaction(const Body &a, const Body &b, const Interaction
                               s.distance, kc.pairs(), kc.count(), scratch.triangle_contacts,
                               stats, scratch.distance, kc.lower_bounds(), skip);
     kc.rebase(pose_a, *a.triangles, pose_b, *b.triangles, scratch.distance.results.data());
+    return after_kernel(a, b, s, dt, history, scratch, cache, kc.pairs(),
+                        scratch.distance.results.data(), scratch.distance.tested,
+                        static_cast<int>(scratch.triangle_contacts.size()));
   } else {
     const bool keep = coherent && cache.update && cache.candidates->worth_keeping();
     const double reach = keep ? candidate_reach(a, b, s.coherence, cutoff, dt) : 0.0;
@@ -327,22 +333,25 @@ PairForceResult body_interaction(const Body &a, const Body &b, const Interaction
       cache.candidates->keep(pose_a, *a.triangles, pose_b, *b.triangles, cutoff, reach,
                              scratch.distance.pairs.data(), count, scratch.distance.results.data());
   }
-  return after_kernel(a, b, s, dt, history, scratch, cache, scratch.distance.results.data(),
-                      scratch.distance.tested);
+  return after_kernel(a, b, s, dt, history, scratch, cache, scratch.distance.pairs.data(),
+                      scratch.distance.results.data(), scratch.distance.tested,
+                      static_cast<int>(scratch.triangle_contacts.size()));
 }
 
 namespace {
 
 PairForceResult after_kernel(const Body &a, const Body &b, const InteractionSettings &s,
                              double dt, double *history, InteractionScratch &scratch,
-                             SeparationCache cache, const TrianglePairDistance *tested,
-                             int num_tested) {
+                             SeparationCache cache, const TrianglePairIndex *pairs,
+                             const TrianglePairDistance *tested, int num_tested,
+                             int num_contacts) {
   const double cutoff = a.reach_epsilon(b) + b.reach_epsilon(a);
   const RigidPose *pose_a = &a.pose, *pose_b = b.is_wall() ? nullptr : &b.pose;
   CandidateCache *kept = s.coherence > 0.0 ? cache.candidates : nullptr;
+  const bool touching = num_contacts > 0;
   if (cache.axis && cache.update) {
     double gap = -std::numeric_limits<double>::infinity();
-    const Eigen::Vector3d axis = scratch.triangle_contacts.empty()
+    const Eigen::Vector3d axis = !touching
                                      ? new_separating_axis(a, b, cutoff, tested, num_tested, gap)
                                      : Eigen::Vector3d::Zero();
     for (int d = 0; d < 3; ++d)
@@ -354,7 +363,7 @@ PairForceResult after_kernel(const Body &a, const Body &b, const InteractionSett
       kept->keep_gap(pose_a, *a.triangles, pose_b, *b.triangles, gap, n);
     }
   }
-  if (scratch.triangle_contacts.empty()) { // the reduction of nothing needs no parameters
+  if (!touching) { // the reduction of nothing needs no parameters
     scratch.points.clear();
     return pair_contact_force(scratch.points, a.state, b.state, s.coefficients, dt, history);
   }
@@ -373,9 +382,8 @@ PairForceResult after_kernel(const Body &a, const Body &b, const InteractionSett
     params.edge_bulge_a = a.edge_bulge;
     params.surface_lift = a.lift;
   }
-  reduce_contacts(scratch.triangle_contacts.data(),
-                  static_cast<int>(scratch.triangle_contacts.size()), *a.triangles, a.epsilon,
-                  *b.triangles, b.epsilon, params, scratch.reduction, scratch.points);
+  reduce_kernel_results(pairs, tested, num_tested, cutoff, *a.triangles, a.epsilon, *b.triangles,
+                        b.epsilon, params, scratch.reduction, scratch.points);
   const double layer = a.epsilon + b.epsilon;
   SurfaceSide side_a, side_b;
   side_b.wall = b.is_wall();

@@ -33,6 +33,8 @@ struct InteractionSettings {
 // and shrinks its vectors (their pointers are in the struct).
 struct alignas(64) InteractionScratch {
   ContactWorkspace distance;
+  // What contacts_among_candidates appends where a pair's kernel runs at once (not queued);
+  // the reduction reads the kernel's results in place (reduce_kernel_results).
   std::vector<TriangleContact> triangle_contacts;
   std::vector<ContactPoint> points;
   ReductionWorkspace reduction;

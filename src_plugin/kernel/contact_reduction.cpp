@@ -29,9 +29,44 @@ Vector3d safe_reference(const Vector3d &ref) {
   return Vector3d::UnitZ();
 }
 
+// The contacts reduce() reads come as TriangleContacts (reduce_contacts) or as the distance
+// kernel's results on a pair list, read in place (reduce_kernel_results: a KernelContact is what
+// contacts_from_results would copy into a TriangleContact). The accessors below read either;
+// the geometry's fields (distance, point_a, point_b, normal, intersecting, penetration_depth)
+// have the same names in TriangleContact and TrianglePairDistance.
+struct KernelContact {
+  const TrianglePairIndex &pair;
+  const TrianglePairDistance &r;
+};
+const TriangleContact &geometry(const TriangleContact &c) { return c; }
+const TrianglePairDistance &geometry(const KernelContact &c) { return c.r; }
+int tri_a_of(const TriangleContact &c) { return c.tri_a; }
+int tri_a_of(const KernelContact &c) { return c.pair.a; }
+int tri_b_of(const TriangleContact &c) { return c.tri_b; }
+int tri_b_of(const KernelContact &c) { return c.pair.b; }
+bool exact_of(const TriangleContact &c) { return c.exact; }
+bool exact_of(const KernelContact &c) { return certified_exact(c.r); }
+bool apart_of(const TriangleContact &c) { return c.apart; }
+bool apart_of(const KernelContact &c) { return certified_apart(c.r); }
+
+// The two sources: every TriangleContact counts; a kernel result counts when it is closer than
+// the cutoff (contacts_from_results' rule).
+struct TriangleContactList {
+  const TriangleContact *contacts;
+  const TriangleContact &at(int k) const { return contacts[k]; }
+  bool counts(int) const { return true; }
+};
+struct KernelResultList {
+  const TrianglePairIndex *pairs;
+  const TrianglePairDistance *results;
+  double cutoff;
+  KernelContact at(int k) const { return {pairs[k], results[k]}; }
+  bool counts(int k) const { return results[k].distance < cutoff; }
+};
+
 // Unit normal of one raw contact: the kernel's; for a separated pair whose normal is unusable,
 // the closest-point direction; else the reference direction.
-Vector3d raw_normal(const TriangleContact &c, const Vector3d &ref) {
+template <class G> Vector3d raw_normal(const G &c, const Vector3d &ref) {
   const double len = c.normal.norm();
   if (std::isfinite(len) && len > 0.5)
     return c.normal / len;
@@ -44,25 +79,25 @@ Vector3d raw_normal(const TriangleContact &c, const Vector3d &ref) {
 
 // A triangle contact's raw values: its distance (0 when intersecting), its overlap under the
 // layer, its point (midway between the closest points).
-double contact_distance(const TriangleContact &c) {
+template <class G> double contact_distance(const G &c) {
   return c.intersecting ? 0.0 : std::max(0.0, c.distance);
 }
-double contact_overlap(const TriangleContact &c, double layer) {
+template <class G> double contact_overlap(const G &c, double layer) {
   const double depth = c.intersecting && std::isfinite(c.penetration_depth)
                            ? std::max(0.0, c.penetration_depth)
                            : 0.0;
   return layer - contact_distance(c) + depth;
 }
-Vector3d contact_point(const TriangleContact &c) { return 0.5 * (c.point_a + c.point_b); }
+template <class G> Vector3d contact_point(const G &c) { return 0.5 * (c.point_a + c.point_b); }
 
 // Strict total order of raw contacts of equal overlap (deepest first before it): triangle ids,
 // then coordinates, then the contacts' indices ia, ib.
-bool deeper(const TriangleContact &a, const TriangleContact &b, int ia, int ib) {
-  if (a.tri_a != b.tri_a)
-    return a.tri_a < b.tri_a;
-  if (a.tri_b != b.tri_b)
-    return a.tri_b < b.tri_b;
-  const Vector3d pa = contact_point(a), pb = contact_point(b);
+template <class C> bool deeper(const C &a, const C &b, int ia, int ib) {
+  if (tri_a_of(a) != tri_a_of(b))
+    return tri_a_of(a) < tri_a_of(b);
+  if (tri_b_of(a) != tri_b_of(b))
+    return tri_b_of(a) < tri_b_of(b);
+  const Vector3d pa = contact_point(geometry(a)), pb = contact_point(geometry(b));
   for (int k = 0; k < 3; ++k)
     if (pa[k] != pb[k])
       return pa[k] < pb[k];
@@ -954,7 +989,8 @@ namespace {
 // is the comparator's below, a strict total order: the same permutation. Keys tied in overlap
 // and both triangles (one triangle pair given twice: only a caller's own list) and larger sets
 // take std::sort with the full comparator (deeper()).
-void sort_keys(std::vector<ReductionWorkspace::Key> &keys, const TriangleContact *contacts,
+template <class Source>
+void sort_keys(std::vector<ReductionWorkspace::Key> &keys, const Source &contacts,
                std::vector<ReductionWorkspace::Key> &sorted) {
   using Key = ReductionWorkspace::Key;
   constexpr std::size_t kRankSortMax = 24;
@@ -965,7 +1001,7 @@ void sort_keys(std::vector<ReductionWorkspace::Key> &keys, const TriangleContact
       return x.tri_a < y.tri_a;
     if (x.tri_b != y.tri_b)
       return x.tri_b < y.tri_b;
-    return deeper(contacts[x.index], contacts[y.index], x.index, y.index);
+    return deeper(contacts.at(x.index), contacts.at(y.index), x.index, y.index);
   };
   const std::size_t n = keys.size();
   if (n <= 1)
@@ -1008,7 +1044,8 @@ void sort_keys(std::vector<ReductionWorkspace::Key> &keys, const TriangleContact
   keys.swap(sorted);
 }
 
-void reduce(const TriangleContact *contacts, int n, const Faces &faces, double eps_a, double eps_b,
+template <class Source>
+void reduce(const Source &contacts, int n, const Faces &faces, double eps_a, double eps_b,
             const ReductionParams &params, ReductionWorkspace &work,
             std::vector<ContactPoint> &out) {
   out.clear();
@@ -1020,23 +1057,26 @@ void reduce(const TriangleContact *contacts, int n, const Faces &faces, double e
   std::vector<ReductionWorkspace::Key> &keys = work.keys;
   keys.clear();
   for (int k = 0; k < n; ++k) {
-    const TriangleContact &c = contacts[k];
-    if (c.tri_a < 0 || c.tri_a >= na || c.tri_b < 0 || c.tri_b >= nb)
+    if (!contacts.counts(k))
+      continue;
+    const auto &c = contacts.at(k);
+    const int ta = tri_a_of(c), tb = tri_b_of(c);
+    if (ta < 0 || ta >= na || tb < 0 || tb >= nb)
       throw std::out_of_range("reduce_contacts: contact " + std::to_string(k) +
-                              " names triangles " + std::to_string(c.tri_a) + ", " +
-                              std::to_string(c.tri_b) + " of meshes with " + std::to_string(na) +
+                              " names triangles " + std::to_string(ta) + ", " +
+                              std::to_string(tb) + " of meshes with " + std::to_string(na) +
                               ", " + std::to_string(nb));
-    const double overlap = contact_overlap(c, layer);
+    const double overlap = contact_overlap(geometry(c), layer);
     if (!(overlap > -params.surface_lift)) // 0 but where smooth surfaces reach past the facets
       continue;
-    if (!finite(contact_point(c)))
+    if (!finite(contact_point(geometry(c))))
       continue; // nothing sensible to place; the kernel never produces this
     // Field by field: a braced key went through the stack and stalled on store forwarding.
     ReductionWorkspace::Key &key = keys.emplace_back();
     key.overlap = overlap;
     key.index = k;
-    key.tri_a = c.tri_a;
-    key.tri_b = c.tri_b;
+    key.tri_a = ta;
+    key.tri_b = tb;
   }
   std::vector<Raw> &raw = work.raw;
   if (keys.empty()) {
@@ -1057,22 +1097,23 @@ void reduce(const TriangleContact *contacts, int n, const Faces &faces, double e
     work.call = 1;
   }
   for (std::size_t k = 0; k < keys.size(); ++k) {
-    const TriangleContact &c = contacts[keys[k].index];
+    const auto &c = contacts.at(keys[k].index);
+    const auto &g = geometry(c);
     Raw &r = raw[k];
-    r.point = contact_point(c);
-    r.normal = raw_normal(c, ref);
-    r.separation = c.intersecting ? Vector3d::Zero() : Vector3d(c.point_b - c.point_a);
+    r.point = contact_point(g);
+    r.normal = raw_normal(g, ref);
+    r.separation = g.intersecting ? Vector3d::Zero() : Vector3d(g.point_b - g.point_a);
     r.overlap = keys[k].overlap;
-    r.distance = contact_distance(c);
-    r.tri_a = c.tri_a;
-    r.tri_b = c.tri_b;
-    r.intersecting = c.intersecting;
-    r.exact = c.exact;
-    r.apart = c.apart;
+    r.distance = contact_distance(g);
+    r.tri_a = keys[k].tri_a;
+    r.tri_b = keys[k].tri_b;
+    r.intersecting = g.intersecting;
+    r.exact = exact_of(c);
+    r.apart = apart_of(c);
     r.maybe_parallel =
         params.method == ReductionMethod::clusters &&
-        !clearly_not_parallel(triangle_normal(*faces.a, c.tri_a, work.normals_a, work.call),
-                              triangle_normal(*faces.b, c.tri_b, work.normals_b, work.call));
+        !clearly_not_parallel(triangle_normal(*faces.a, r.tri_a, work.normals_a, work.call),
+                              triangle_normal(*faces.b, r.tri_b, work.normals_b, work.call));
   }
 
   switch (params.method) {
@@ -1107,9 +1148,18 @@ void reduce_contacts(const TriangleContact *contacts, int n, const TriangleSoA &
                      double eps_a, const TriangleSoA &tris_b, double eps_b,
                      const ReductionParams &params, ReductionWorkspace &work,
                      std::vector<ContactPoint> &out) {
-  reduce(contacts, n, Faces{&tris_a, &tris_b, params.edge_bulge_a, params.edge_bulge_b,
-                                 params.surface_lift}, eps_a,
-         eps_b, params, work, out);
+  reduce(TriangleContactList{contacts}, n,
+         Faces{&tris_a, &tris_b, params.edge_bulge_a, params.edge_bulge_b, params.surface_lift},
+         eps_a, eps_b, params, work, out);
+}
+
+void reduce_kernel_results(const TrianglePairIndex *pairs, const TrianglePairDistance *results,
+                           int count, double cutoff, const TriangleSoA &tris_a, double eps_a,
+                           const TriangleSoA &tris_b, double eps_b, const ReductionParams &params,
+                           ReductionWorkspace &work, std::vector<ContactPoint> &out) {
+  reduce(KernelResultList{pairs, results, cutoff}, count,
+         Faces{&tris_a, &tris_b, params.edge_bulge_a, params.edge_bulge_b, params.surface_lift},
+         eps_a, eps_b, params, work, out);
 }
 
 std::vector<ContactPoint> reduce_contacts(const std::vector<TriangleContact> &contacts,

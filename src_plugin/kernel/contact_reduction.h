@@ -416,6 +416,15 @@ void reduce_contacts(const TriangleContact *contacts, int n, const TriangleSoA &
                      const ReductionParams &params, ReductionWorkspace &work,
                      std::vector<ContactPoint> &out);
 
+// The same for the distance kernel's results on a pair list, read in place (the pair loop's
+// form): results[k] on triangles pairs[k].a of a and pairs[k].b of b; those closer than
+// `cutoff` count, as contacts_from_results (particle_contacts.h) reports them, and the output
+// is bitwise reduce_contacts' of that function's list, without building it.
+void reduce_kernel_results(const TrianglePairIndex *pairs, const TrianglePairDistance *results,
+                           int count, double cutoff, const TriangleSoA &tris_a, double eps_a,
+                           const TriangleSoA &tris_b, double eps_b, const ReductionParams &params,
+                           ReductionWorkspace &work, std::vector<ContactPoint> &out);
+
 // Convenience form for tests and tools.
 std::vector<ContactPoint> reduce_contacts(const std::vector<TriangleContact> &contacts,
                                           const TriangleSoA &tris_a, double eps_a,

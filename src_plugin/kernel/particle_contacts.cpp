@@ -259,8 +259,7 @@ void contacts_from_results(const TrianglePairIndex *pairs, const TrianglePairDis
     if (!(r.distance < cutoff))
       continue;
     out.push_back({pairs[k].a, pairs[k].b, r.distance, r.point_a, r.point_b, r.normal,
-                   r.intersecting, r.penetration_depth, r.lower_bound >= r.distance,
-                   !r.intersecting && r.lower_bound > 0.0});
+                   r.intersecting, r.penetration_depth, certified_exact(r), certified_apart(r)});
     ++stats.contacts;
   }
 }

@@ -173,6 +173,11 @@ HybridJob queue_candidates(const TriangleSoA &a, double eps_a, const TriangleSoA
 void contacts_from_results(const TrianglePairIndex *pairs, const TrianglePairDistance *results,
                            int count, double cutoff, std::vector<TriangleContact> &out,
                            ContactStats &stats);
+// What a kernel result certifies (TriangleContact::exact and ::apart).
+inline bool certified_exact(const TrianglePairDistance &r) { return r.lower_bound >= r.distance; }
+inline bool certified_apart(const TrianglePairDistance &r) {
+  return !r.intersecting && r.lower_bound > 0.0;
+}
 
 // The same with a workspace of its own (allocates on every call: tests, tools, one-off uses).
 void find_triangle_contacts(const TriangleSoA &a, double eps_a, const TriangleSoA &b, double eps_b,
