@@ -2,6 +2,7 @@
 // every parallel mode and for 1, 2 and 4 threads, reports the same triangle pairs as brute
 // force, with distances within the hybrid tolerance; cases at 0.99 and 1.01 of 2 epsilon.
 #include "particle_contacts.h"
+#include "contact_reduction.h"
 #include "test_particles.h"
 
 #include <gtest/gtest.h>
@@ -300,4 +301,47 @@ TEST(ParticleContacts, OnlyLongListsAreSharedAmongThreads) {
       }
     }
   omp_set_num_threads(saved);
+}
+
+// The pair loop reduces the kernel's results in place (reduce_kernel_results) instead of the
+// TriangleContacts contacts_from_results would copy out of them: the contact points must be
+// bitwise the same, for every scene (touching, intersecting, apart) and with a surface lift
+// (where results beyond the cutoff would otherwise count).
+TEST(ParticleContacts, ReducingKernelResultsInPlaceEqualsReducingTheirContacts) {
+  for (const Scene &s : all_scenes())
+    for (double lift : {0.0, 0.5}) {
+      ContactOptions opt;
+      ContactWorkspace ws;
+      ContactStats stats;
+      std::vector<TriangleContact> list;
+      const int count = find_candidate_pairs(s.a, s.b, 3 * s.eps, opt, ws);
+      contacts_among_candidates(s.a, s.eps, s.b, s.eps, opt, ws.pairs.data(), count, list, stats,
+                                ws);
+      ReductionParams params;
+      params.link_length = recommended_link_length(1e-3, 1e-3, s.eps, s.eps);
+      params.distance_tolerance = certified_tolerance(opt, s.eps, s.eps);
+      params.surface_lift = lift * s.eps;
+      ReductionWorkspace work_list, work_results;
+      std::vector<ContactPoint> from_list, in_place;
+      reduce_contacts(list.data(), static_cast<int>(list.size()), s.a, s.eps, s.b, s.eps, params,
+                      work_list, from_list);
+      reduce_kernel_results(ws.pairs.data(), ws.results.data(), count, 2 * s.eps, s.a, s.eps, s.b,
+                            s.eps, params, work_results, in_place);
+      ASSERT_EQ(from_list.size(), in_place.size()) << s.name;
+      for (std::size_t k = 0; k < in_place.size(); ++k) {
+        const ContactPoint &x = from_list[k], &y = in_place[k];
+        EXPECT_EQ(x.point, y.point) << s.name;
+        EXPECT_EQ(x.normal, y.normal) << s.name;
+        EXPECT_EQ(x.overlap, y.overlap) << s.name;
+        EXPECT_EQ(x.energy_overlap, y.energy_overlap) << s.name;
+        EXPECT_EQ(x.min_distance, y.min_distance) << s.name;
+        EXPECT_EQ(x.num_merged, y.num_merged) << s.name;
+        EXPECT_EQ(x.intersecting, y.intersecting) << s.name;
+        EXPECT_EQ(x.tri_a, y.tri_a) << s.name;
+        EXPECT_EQ(x.tri_b, y.tri_b) << s.name;
+        EXPECT_EQ(x.patch_area, y.patch_area) << s.name;
+        EXPECT_EQ(x.patch_second_moment, y.patch_second_moment) << s.name;
+        EXPECT_EQ(x.face_weight, y.face_weight) << s.name;
+      }
+    }
 }
