@@ -330,18 +330,19 @@ TEST(ParticleContacts, ReducingKernelResultsInPlaceEqualsReducingTheirContacts) 
       ASSERT_EQ(from_list.size(), in_place.size()) << s.name;
       for (std::size_t k = 0; k < in_place.size(); ++k) {
         const ContactPoint &x = from_list[k], &y = in_place[k];
-        EXPECT_EQ(x.point, y.point) << s.name;
-        EXPECT_EQ(x.normal, y.normal) << s.name;
-        EXPECT_EQ(x.overlap, y.overlap) << s.name;
-        EXPECT_EQ(x.energy_overlap, y.energy_overlap) << s.name;
-        EXPECT_EQ(x.min_distance, y.min_distance) << s.name;
-        EXPECT_EQ(x.num_merged, y.num_merged) << s.name;
-        EXPECT_EQ(x.intersecting, y.intersecting) << s.name;
-        EXPECT_EQ(x.tri_a, y.tri_a) << s.name;
-        EXPECT_EQ(x.tri_b, y.tri_b) << s.name;
-        EXPECT_EQ(x.patch_area, y.patch_area) << s.name;
-        EXPECT_EQ(x.patch_second_moment, y.patch_second_moment) << s.name;
-        EXPECT_EQ(x.face_weight, y.face_weight) << s.name;
+        EXPECT_TRUE(x.point == y.point && x.normal == y.normal &&
+                    x.damping_point == y.damping_point &&
+                    x.patch_second_moment == y.patch_second_moment)
+            << s.name;
+        const double xs[] = {x.overlap,    x.energy_overlap,    x.min_distance,
+                             x.patch_area, x.patch_mean_radius, x.face_weight};
+        const double ys[] = {y.overlap,    y.energy_overlap,    y.min_distance,
+                             y.patch_area, y.patch_mean_radius, y.face_weight};
+        for (int f = 0; f < 6; ++f)
+          EXPECT_EQ(xs[f], ys[f]) << s.name << ", value " << f;
+        EXPECT_TRUE(x.num_merged == y.num_merged && x.intersecting == y.intersecting &&
+                    x.tri_a == y.tri_a && x.tri_b == y.tri_b)
+            << s.name;
       }
     }
 }
