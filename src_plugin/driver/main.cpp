@@ -1,6 +1,7 @@
 // liggghts-tri: Debian's LIGGGHTS with the triangulated-particle styles registered.
-// It takes exactly liggghts's command line and runs the input the same way; the only
-// difference is register_styles() between constructing LAMMPS and reading the input.
+// It takes exactly liggghts's command line and runs the input the same way; the differences
+// are register_styles() between constructing LAMMPS and reading the input, and `-screen none`
+// (below).
 #include "style_registry.h"
 
 #include "input.h"
@@ -13,6 +14,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <vector>
 
 namespace {
 
@@ -46,6 +48,26 @@ void install_signal_handlers() {
   sigaction(SIGUSR1, &restart_action, nullptr);
 }
 
+// LIGGGHTS 3.8 writes to the screen without checking that there is one while fix mesh/surface
+// reads its mesh file (InputMeshTri::meshtrifile), so `-screen none` ended a deck with a wall
+// in a segmentation fault, in plain liggghts too. Outside partitioned runs (whose screens are
+// files named after the argument, one per partition) /dev/null is passed instead: nothing is
+// printed, as asked.
+std::vector<char *> screen_none_to_null(int argc, char **argv) {
+  static char dev_null[] = "/dev/null";
+  std::vector<char *> args(argv, argv + argc + 1); // with argv[argc], the null, as main's
+  const auto is = [&](int i, const char *name, const char *abbreviation) {
+    return std::strcmp(args[i], name) == 0 || std::strcmp(args[i], abbreviation) == 0;
+  };
+  bool partitioned = false;
+  for (int i = 1; i < argc; ++i)
+    partitioned = partitioned || is(i, "-partition", "-p");
+  for (int i = 1; !partitioned && i + 1 < argc; ++i)
+    if (is(i, "-screen", "-sc") && std::strcmp(args[i + 1], "none") == 0)
+      args[i + 1] = dev_null;
+  return args;
+}
+
 } // namespace
 
 int main(int argc, char **argv) {
@@ -57,7 +79,8 @@ int main(int argc, char **argv) {
     std::atexit(print_tri_styles);
   }
 
-  auto *lammps = new LAMMPS_NS::LAMMPS(argc, argv, MPI_COMM_WORLD);
+  std::vector<char *> args = screen_none_to_null(argc, argv);
+  auto *lammps = new LAMMPS_NS::LAMMPS(argc, args.data(), MPI_COMM_WORLD);
   tri_driver::register_styles(*lammps);
   lammps->input->file();
   delete lammps;

@@ -1,11 +1,11 @@
-"""What users read: `liggghts-tri -h`, fix tri/vtk's ParaView frames against a dump, fix
-tri/particles' per-atom columns through atom-style variables, and compute tri/erotate against
-hand values."""
+"""What users read: `liggghts-tri -h`, `-screen none`, fix tri/vtk's ParaView frames against a
+dump, fix tri/particles' per-atom columns through atom-style variables, and compute tri/erotate
+against hand values."""
 import os
 import subprocess
 
-from decklib import FLIGHT_PERIODIC, MPI_ENV, check, cube, last_frame, run_deck, snapshots
-from decklib import subdir, thermo_rows, write_stl
+from decklib import CUBE_SIDE, FLIGHT_PERIODIC, HERE, MPI_ENV, check, cube, last_frame
+from decklib import make_contact_meshes, run, run_deck, snapshots, subdir, thermo_rows, write_stl
 
 
 def test_help(ctx):
@@ -16,6 +16,27 @@ def test_help(ctx):
         check(style in p.stdout, f"'liggghts-tri -h' does not list {style}")
     check("Pair styles" in p.stdout and "gran" in p.stdout,
           "'liggghts-tri -h' lost LIGGGHTS's own style list")
+
+
+def test_screen_none(ctx):
+    """`-screen none` with a wall: LIGGGHTS 3.8 prints to the screen it was told not to have
+    while fix mesh/surface reads the mesh (a segmentation fault in plain liggghts); the driver
+    passes /dev/null instead. The deck must run, print nothing and write its dump."""
+    make_contact_meshes(ctx.work)
+    dump = os.path.join(ctx.work, "contact.dump")
+    variables = {"dir": HERE, "zc": repr(CUBE_SIDE / 2 + 5e-5), "vz": "0", "kn": "2000",
+                 "kt": "1000", "gamman": "20", "gammat": "10", "mu": "0.5"}
+    for flag in ("-screen", "-sc"):
+        if os.path.exists(dump):
+            os.remove(dump)
+        cmd = [ctx.exe, "-in", os.path.join(HERE, "in.contact_wall"), "-log", "none", flag, "none"]
+        for k, v in variables.items():
+            cmd += ["-var", k, v]
+        code, out = run(cmd, ctx.work)
+        check(code == 0, f"{' '.join(cmd)} exited {code}:\n{out[-2000:]}")
+        check(out.strip() == "", f"{flag} none printed:\n{out[-2000:]}")
+        step, rows = last_frame(dump)
+        check(step == 0 and set(rows) == {1}, f"{flag} none: dump frame {step}, atoms {sorted(rows)}")
 
 
 def test_peratom_variable(ctx):
