@@ -170,9 +170,7 @@ PairForceResult resume_after_kernel(const Body &a, const Body &b, const Interact
   const InteractionScratch::JobOrigin &origin = scratch.job_origins[j];
   const TrianglePairDistance *results = scratch.job_results.data() + scratch.job_offsets[j];
   const double cutoff = a.reach_epsilon(b) + b.reach_epsilon(a);
-  int num_contacts = 0; // as contacts_from_results counts them
-  for (int k = 0; k < job.count; ++k)
-    num_contacts += results[k].distance < cutoff;
+  const int num_contacts = count_triangle_contacts(results, job.count, cutoff);
   stats.contacts += num_contacts;
   if (origin.keep)
     cache.candidates->keep(&a.pose, *a.triangles, b.is_wall() ? nullptr : &b.pose, *b.triangles,

@@ -61,7 +61,7 @@ struct KernelResultList {
   const TrianglePairDistance *results;
   double cutoff;
   KernelContact at(int k) const { return {pairs[k], results[k]}; }
-  bool counts(int k) const { return results[k].distance < cutoff; }
+  bool counts(int k) const { return is_triangle_contact(results[k], cutoff); }
 };
 
 // Unit normal of one raw contact: the kernel's; for a separated pair whose normal is unusable,

@@ -256,12 +256,19 @@ void contacts_from_results(const TrianglePairIndex *pairs, const TrianglePairDis
                            ContactStats &stats) {
   for (int k = 0; k < count; ++k) {
     const TrianglePairDistance &r = results[k];
-    if (!(r.distance < cutoff))
+    if (!is_triangle_contact(r, cutoff))
       continue;
     out.push_back({pairs[k].a, pairs[k].b, r.distance, r.point_a, r.point_b, r.normal,
                    r.intersecting, r.penetration_depth, certified_exact(r), certified_apart(r)});
     ++stats.contacts;
   }
+}
+
+int count_triangle_contacts(const TrianglePairDistance *results, int count, double cutoff) {
+  int n = 0;
+  for (int k = 0; k < count; ++k)
+    n += is_triangle_contact(results[k], cutoff);
+  return n;
 }
 
 void find_triangle_contacts(const TriangleSoA &a, double eps_a, const TriangleSoA &b, double eps_b,

@@ -173,6 +173,13 @@ HybridJob queue_candidates(const TriangleSoA &a, double eps_a, const TriangleSoA
 void contacts_from_results(const TrianglePairIndex *pairs, const TrianglePairDistance *results,
                            int count, double cutoff, std::vector<TriangleContact> &out,
                            ContactStats &stats);
+// Whether a kernel result is a triangle contact (closer than the cutoff), and how many of
+// `count` results are: the rule of contacts_from_results, for callers that read the results in
+// place (reduce_kernel_results).
+inline bool is_triangle_contact(const TrianglePairDistance &r, double cutoff) {
+  return r.distance < cutoff;
+}
+int count_triangle_contacts(const TrianglePairDistance *results, int count, double cutoff);
 // What a kernel result certifies (TriangleContact::exact and ::apart).
 inline bool certified_exact(const TrianglePairDistance &r) { return r.lower_bound >= r.distance; }
 inline bool certified_apart(const TrianglePairDistance &r) {
