@@ -189,6 +189,16 @@ namespace {
 // A body whose extents come from its pose (a radius is what bounds its world coordinates).
 bool posed(const Body &body) { return body.frame && body.pose.radius > 0.0; }
 
+// A gap proven between a and b now, kept for the travel proof: two particles only (a wall
+// patch has no pose to bound its vertices' magnitude, and hosts keep no travel for it).
+void keep_travel(const Body &a, const Body &b, CandidateCache &kept, const Travel &travel,
+                 double gap) {
+  if (travel.epoch == 0 || b.is_wall())
+    return;
+  kept.keep_travel(travel, gap,
+                   CandidateCache::magnitude_of(a.pose) + CandidateCache::magnitude_of(b.pose));
+}
+
 // The vertices a body's extents are computed from: body frame where it has a pose.
 const TriangleSoA &extent_vertices(const Body &body) {
   return posed(body) ? *body.frame : *body.triangles;
@@ -221,10 +231,17 @@ bool proven_apart(const Body &a, const Body &b, const InteractionSettings &s,
   const double cutoff = a.reach_epsilon(b) + b.reach_epsilon(a);
   const RigidPose *pose_a = &a.pose, *pose_b = b.is_wall() ? nullptr : &b.pose;
   CandidateCache *kept = s.coherence > 0.0 ? cache.candidates : nullptr;
-  // A gap kept from an earlier step that the motion since cannot have closed (O(1); a rigid
-  // pose's triangles are not read), then the kept axis (O(vertices)).
-  if (kept && kept->proves_apart(pose_a, *a.triangles, pose_b, *b.triangles, cutoff))
+  // The travel proof (O(1) on the host's sums), then a gap kept from an earlier step that the
+  // motion since cannot have closed (O(1); a rigid pose's triangles are not read), then the kept
+  // axis (O(vertices)). A gap proven now is kept for the travel proof.
+  if (kept && kept->proves_apart_by_travel(cache.travel, cutoff))
     return true;
+  double proven = 0.0;
+  if (kept && kept->proves_apart(pose_a, *a.triangles, pose_b, *b.triangles, cutoff, &proven)) {
+    if (cache.update)
+      keep_travel(a, b, *kept, cache.travel, proven);
+    return true;
+  }
   const Eigen::Vector3d axis(cache.axis);
   const double length = axis.norm();
   if (!(length > 0.0) || !std::isfinite(length) || extent_vertices(a).x.empty() ||
@@ -234,8 +251,10 @@ bool proven_apart(const Body &a, const Body &b, const InteractionSettings &s,
   const double gap = proven_gap(body_extent(a, n), body_extent(b, n), cutoff);
   if (!(gap >= cutoff))
     return false;
-  if (kept && cache.update)
+  if (kept && cache.update) {
     kept->keep_gap(pose_a, *a.triangles, pose_b, *b.triangles, gap, n);
+    keep_travel(a, b, *kept, cache.travel, gap);
+  }
   return true;
 }
 
@@ -359,6 +378,7 @@ PairForceResult after_kernel(const Body &a, const Body &b, const InteractionSett
     if (kept && axis != Eigen::Vector3d::Zero()) {
       const Eigen::Vector3d n = axis / axis.norm(); // the direction proven_gap projects on
       kept->keep_gap(pose_a, *a.triangles, pose_b, *b.triangles, gap, n);
+      keep_travel(a, b, *kept, cache.travel, gap);
     }
   }
   if (!touching) { // the reduction of nothing needs no parameters

@@ -124,6 +124,9 @@ struct SeparationCache {
   CandidateCache *candidates = nullptr;
   // The host has called proven_apart for this step and it returned false: not repeated.
   bool not_apart = false;
+  // Two particles' running motion sums (candidate_cache.h: Travel), where the host keeps them:
+  // proven_apart tries the travel proof first, and every gap proven is kept for it.
+  Travel travel = {};
 };
 
 // Forces between a (a particle) and b (a particle or a wall) for one time step of length dt.

@@ -25,6 +25,13 @@ void CandidateCache::record(const RigidPose *rigid, const TriangleSoA &t, Pose &
   }
 }
 
+double rigid_motion_bound(const RigidPose &then, const RigidPose &now) {
+  if (!(now.radius > 0.0) || now.radius != then.radius || now.frame != then.frame)
+    return std::numeric_limits<double>::infinity();
+  const Eigen::Quaterniond turn = now.q * then.q.conjugate();
+  return (now.x - then.x).norm() + 2.0 * turn.vec().norm() * now.radius;
+}
+
 double CandidateCache::displacement(const Pose &then, const RigidPose *rigid, const TriangleSoA &t,
                                     double &magnitude, const Eigen::Vector3d *along) {
   constexpr double kUnbounded = std::numeric_limits<double>::infinity();
@@ -107,18 +114,24 @@ bool CandidateCache::worth_keeping() {
 }
 
 bool CandidateCache::proves_apart(const RigidPose *pose_a, const TriangleSoA &a,
-                                  const RigidPose *pose_b, const TriangleSoA &b,
-                                  double cutoff) const {
+                                  const RigidPose *pose_b, const TriangleSoA &b, double cutoff,
+                                  double *proven) const {
   if (!gap_valid_)
     return false;
-  if (gap_axis_ == Eigen::Vector3d::Zero()) // the gap can only have shrunk
-    return gap_ >= cutoff && gap_ - moved(gap_a_, pose_a, a, gap_b_, pose_b, b, gap_) >= cutoff;
+  if (gap_axis_ == Eigen::Vector3d::Zero()) { // the gap can only have shrunk
+    const double now = gap_ - moved(gap_a_, pose_a, a, gap_b_, pose_b, b, gap_);
+    if (proven)
+      *proven = now;
+    return gap_ >= cutoff && now >= cutoff;
+  }
   // a's vertices advancing along n close the gap, b's along -n.
   double magnitude_a = 0.0, magnitude_b = 0.0;
   const Eigen::Vector3d back = -gap_axis_;
   const double closing = displacement(gap_a_, pose_a, a, magnitude_a, &gap_axis_) +
                          displacement(gap_b_, pose_b, b, magnitude_b, &back);
   const double slack = kSeparationSlackRatio * (magnitude_a + magnitude_b + std::fabs(gap_));
+  if (proven)
+    *proven = gap_ - closing - slack;
   return gap_ - closing - slack >= cutoff; // false for NaN or an unbounded motion
 }
 

@@ -47,17 +47,34 @@
 // (a gap kept without its axis falls back to g - D_a - D_b). In a granular gas, where bodies
 // pass each other at speed, the proof lasts several times longer than with D_a + D_b.
 //
+// A cheaper proof of the same gap, for two particles: the host keeps, per particle, a running
+// sum T of the bound above over its steps, T += |x - x'| + 2 sin(theta' / 2) r from one force
+// evaluation to the next (Travel, restarted whenever the host renumbers its atoms: an epoch).
+// Every vertex has moved at most T - T0 since a moment when T was T0 (triangle inequality over
+// the steps), so a gap g proven at that moment still holds, less the travel since, while
+//   g - (T_a - T_a0) - (T_b - T_b0) - slack >= cutoff.
+// Two subtractions and a compare on values the host has at hand: a pile's neighbour pairs that
+// stay apart for many steps (most of them) are passed over without their poses, their kept gap
+// or their history being read (keep_travel / proves_apart_by_travel). The bound is looser than
+// the kept gap's (it gives no credit for motion away along the axis, and sums the path rather
+// than the displacement); where it fails the kept gap is tried as before. Rounding: the travel
+// is a sum of non-negative terms, each within a few ulps; the slack is kSeparationSlackRatio
+// times the coordinates' magnitude when the gap was proven plus twice the travel since, and the
+// gap; as for the kept gap, orders of magnitude above the rounding.
+//
 // The kept list is the host's (one per body pair, pair tri/gran and fix tri/wall); a list may
 // be dropped at any time (neighbour-list rebuild, migration, restart): the next step searches
 // afresh, and the contacts are the same either way.
 #pragma once
 
 #include "distance_kernels.h"
+#include "separating_axis.h"
 #include "triangle_distance.h"
 #include "triangle_soa.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -74,6 +91,17 @@ struct RigidPose {
   // Which body-frame triangles they are (the shape's SoA): a pose compares only with a pose of
   // the same shape (a tag the host reuses for another particle starts afresh).
   const void *frame = nullptr;
+};
+
+// The header's bound D on how far any vertex of a particle moved from pose `then` to `now` (m):
+// |x - x0| + 2 sin(theta / 2) r; infinity when the poses do not describe the same body frame.
+double rigid_motion_bound(const RigidPose &then, const RigidPose &now);
+
+// The host's running sums of the two bodies' vertex motion (m) in one epoch (header); epoch 0:
+// not kept (a wall patch, a ghost atom, a host that keeps none).
+struct Travel {
+  double a = 0.0, b = 0.0;
+  long long epoch = 0;
 };
 
 class CandidateCache {
@@ -114,9 +142,33 @@ public:
   bool worth_keeping();
   void note_use() { ++uses_; }
 
-  // True when a kept gap still proves every pair at least `cutoff` apart.
+  // True when a kept gap still proves every pair at least `cutoff` apart. With `proven`: the gap
+  // it proves now (slack taken off).
   bool proves_apart(const RigidPose *pose_a, const TriangleSoA &a, const RigidPose *pose_b,
-                    const TriangleSoA &b, double cutoff) const;
+                    const TriangleSoA &b, double cutoff, double *proven = nullptr) const;
+  // The travel proof (header): true when the gap kept with keep_travel, less the travel since,
+  // is still at least `cutoff`. Reads only the entry's first fields (inline: a host calls it
+  // for every neighbour pair while it lists them).
+  bool proves_apart_by_travel(const Travel &now, double cutoff) const {
+    if (now.epoch == 0 || now.epoch != travel_epoch_)
+      return false;
+    const double moved = (now.a - travel_a_) + (now.b - travel_b_);
+    const double slack = kSeparationSlackRatio * (travel_magnitude_ + 2.0 * moved + travel_gap_);
+    return travel_gap_ - moved - slack >= cutoff; // false for NaN
+  }
+  // Keeps `gap` (m), proven between two particles now, for proves_apart_by_travel: `travel`
+  // their sums now, `magnitude` the largest coordinate of their vertices (m).
+  void keep_travel(const Travel &travel, double gap, double magnitude) {
+    travel_epoch_ = std::isfinite(gap) && std::isfinite(magnitude) ? travel.epoch : 0;
+    travel_gap_ = gap;
+    travel_a_ = travel.a;
+    travel_b_ = travel.b;
+    travel_magnitude_ = magnitude;
+  }
+  // The largest coordinate of a particle's vertices (its pose), for keep_travel.
+  static double magnitude_of(const RigidPose &p) {
+    return p.x.cwiseAbs().maxCoeff() + p.radius;
+  }
   // Keeps `gap` (m), proven between the bodies now along `axis` (unit, from a towards b; zero:
   // not known, the motion is bounded in every direction), and their poses.
   void keep_gap(const RigidPose *pose_a, const TriangleSoA &a, const RigidPose *pose_b,
@@ -127,7 +179,10 @@ public:
   // Drops the kept gap (its pair has lost its axis: body_interaction keeps a gap only beside an
   // axis, so a pair without one is never proven apart by a stale gap, and the hosts skip
   // such pairs without reading this entry).
-  void clear_gap() { gap_valid_ = false; }
+  void clear_gap() {
+    gap_valid_ = false;
+    travel_epoch_ = 0;
+  }
   // Asks for this entry's cache lines: a host's entries lie wherever its map put them, and a
   // task that waits for them (the poses compared first) stalls on every lookup.
   void prefetch() const {
@@ -158,6 +213,9 @@ private:
                       double length);
 
   static constexpr int kPausedSearches = 8;
+  // The travel proof first: with the store's key and step, one cache line (candidate_store.h).
+  double travel_gap_ = 0.0, travel_a_ = 0.0, travel_b_ = 0.0, travel_magnitude_ = 0.0;
+  long long travel_epoch_ = 0; // 0: none kept
   bool valid_ = false; // candidates kept
   int uses_ = 0;       // steps the kept list served
   int pause_ = 0;      // searches left that keep no list

@@ -143,6 +143,12 @@ std::vector<StatColumn> make_columns() {
                     StatReduction::sum};
   energy.length = [](Tally &t) { return &t.elastic_energy; };
   c.push_back(energy);
+  // The travel proof (candidate_cache.h), appended.
+  c.push_back(count_column("pairs_passed",
+                           "body pairs of pairs_separated passed over while the neighbour pairs "
+                           "are listed: their kept gap less the particles' motion since it was "
+                           "proven (the travel proof); nothing of them is read",
+                           [](Tally &t, int) { return &t.body_pairs_passed; }));
   Tally probe;
   const char *base = reinterpret_cast<const char *>(&probe);
   for (StatColumn &column : c) {

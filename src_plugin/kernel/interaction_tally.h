@@ -33,8 +33,16 @@ struct InteractionTally {
   double max_overlap_layers = 0.0;
   double max_depth_of_limit = 0.0;
   double elastic_energy = 0.0; // J, summed in task order (so the same on any thread count)
+  long long body_pairs_passed = 0; // proven apart by the host's travel proof, never evaluated
 
   void add(const PairForceResult &r); // one interaction
+  // n interactions the host passed over, proven apart by the travel proof (candidate_cache.h)
+  // without evaluating them: what n apart_result()s would add (checked, separated), and counted.
+  void add_passed(long long n) {
+    body_pairs_checked += n;
+    distance.bodies_separated += n;
+    body_pairs_passed += n;
+  }
   InteractionTally &operator+=(const InteractionTally &o);
 };
 

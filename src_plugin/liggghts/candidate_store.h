@@ -80,7 +80,9 @@ public:
   }
 
 private:
-  struct Entry {
+  // On cache lines of its own: entry() reads the key and step, and the host then the cache's
+  // travel proof (candidate_cache.h), all on the first line.
+  struct alignas(64) Entry {
     std::uint64_t key = 0;
     long long step = 0; // the last step it was asked for
     bool live = false;  // in the index; false: on the free list

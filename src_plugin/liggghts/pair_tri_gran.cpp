@@ -8,6 +8,7 @@
 #include "force.h"
 #include "modify.h"
 #include "neigh_list.h"
+#include "neighbor.h"
 #include "update.h"
 
 #include <algorithm>
@@ -68,7 +69,10 @@ void PairTriGran::collect_tasks() {
       settings_.interaction.coefficients.tangential == tri::TangentialModel::history;
   const bool coherent = settings_.interaction.coherence > 0.0;
   tasks_.clear();
+  passed_.clear();
   candidates_.begin_step();
+  std::size_t slot = 0; // the store's hint slots: every pair asked for, listed or passed
+  const double cutoff = particles_->epsilon() + particles_->epsilon(); // body_interaction's
   // Every neighbour pair every step, most of them apart: the arrays in locals, which the
   // stores below cannot change (through atom-> they are reloaded for every pair).
   double *const *const x = atom->x;
@@ -100,10 +104,19 @@ void PairTriGran::collect_tasks() {
       double *history = values && tangential ? values : nullptr;
       double *axis = values && settings_.separation ? values + axis_offset_ : nullptr;
       tri::CandidateCache *candidates =
-          coherent ? candidates_.entry(tasks_.size(),
+          coherent ? candidates_.entry(slot++,
                                         tri_liggghts::CandidateStore::pair_key(tag[i], tag[j]))
                    : nullptr;
-      tasks_.push_back({i, j, tag[j] < tag[i], history, axis, values, touching, candidates});
+      const bool swapped = tag[j] < tag[i];
+      if (candidates && candidates->proves_apart_by_travel(
+                            swapped ? travel_.of(j, i) : travel_.of(i, j), cutoff)) {
+        passed_.push_back({tasks_.size(),
+                           tri_liggghts::pair_approach(x[i], atom->v[i], ri, x[j], atom->v[j],
+                                                       radius[j]),
+                           tag[i], tag[j]});
+        continue;
+      }
+      tasks_.push_back({i, j, swapped, history, axis, values, touching, candidates});
     }
   }
   candidates_.end_step();
@@ -126,7 +139,7 @@ tri::PairForceResult PairTriGran::evaluate(const Task &task, tri::InteractionScr
   TaskView v = view(task);
   // prepare() has tested the kept gap and axis.
   const tri::SeparationCache cache{task.axis ? v.axis : nullptr, update_history, task.candidates,
-                                   true};
+                                   true, travel_.of(v.a, v.b)};
   const tri::InteractionSettings &s = materials_.settings(atom->type[v.a], atom->type[v.b]);
   // Stored as seen from (i, j); the kernel sees it from (a, b), and the view writes the values
   // back when it goes out of scope.
@@ -145,7 +158,8 @@ void PairTriGran::prepare(Task &task, bool update_history) {
   particles_->ensure_body_of(task.i);
   particles_->ensure_body_of(task.j);
   TaskView v = view(task);
-  const tri::SeparationCache cache{task.axis ? v.axis : nullptr, update_history, task.candidates};
+  const tri::SeparationCache cache{task.axis ? v.axis : nullptr, update_history, task.candidates,
+                                   false, travel_.of(v.a, v.b)};
   task.apart = tri::proven_apart(particles_->body(v.a), particles_->body(v.b),
                                  settings_.interaction, cache);
 }
@@ -167,6 +181,9 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
   const bool newton = force->newton_pair;
   const double dt = update->dt;
   const bool update_history = shearupdate_ != 0;
+  // Atoms are renumbered only where the neighbour lists are rebuilt (exchange, sorting,
+  // insertion; the setup of a run).
+  travel_.update(*particles_, atom, neighbor->ago == 0);
   collect_tasks();
 
   task_geometry_.resize(tasks_.size());
@@ -222,7 +239,10 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
   tri_liggghts::IntersectingPair first;
   tri_liggghts::DeepestContact deepest;
   tri_liggghts::FastestPair fastest;
+  std::size_t passed = 0;
   for (std::size_t k = 0; k < tasks_.size(); ++k) {
+    for (; passed < passed_.size() && passed_[passed].before == k; ++passed)
+      fastest.consider(passed_[passed].geometry, passed_[passed].tag_i, passed_[passed].tag_j);
     const Task &t = tasks_[k];
     const tri::PairForceResult &r = engine_.result(k);
     fastest.consider(task_geometry_[k], tag[t.i], tag[t.j]);
@@ -230,9 +250,13 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
       first = {std::min(tag[t.i], tag[t.j]), std::max(tag[t.i], tag[t.j])};
     deepest.consider(r, std::min(tag[t.i], tag[t.j]), std::max(tag[t.i], tag[t.j]));
   }
+  for (; passed < passed_.size(); ++passed)
+    fastest.consider(passed_[passed].geometry, passed_[passed].tag_i, passed_[passed].tag_j);
   engine_.apply(atom->f, atom->torque); // the recipients set on the threads, above
+  tri::InteractionTally tally = engine_.tally();
+  tally.add_passed(static_cast<long long>(passed_.size())); // as their apart_result would
   tri_liggghts::ContactBoard &board = particles_->board();
-  board.publish(board_slot_, engine_.tally(), first);
+  board.publish(board_slot_, tally, first);
   board.publish_deepest(board_slot_, deepest);
   board.publish_fastest_pair(fastest);
   board.publish_particle_pairs(list);
@@ -250,5 +274,6 @@ void PairTriGran::report_failure() {
 double PairTriGran::memory_usage() {
   return PairGran::memory_usage() + static_cast<double>(engine_.bytes()) +
          static_cast<double>(candidates_.bytes()) +
-         static_cast<double>(tasks_.capacity() * sizeof(Task));
+         static_cast<double>(tasks_.capacity() * sizeof(Task)) +
+         static_cast<double>(passed_.capacity() * sizeof(PassedPair) + travel_.bytes());
 }

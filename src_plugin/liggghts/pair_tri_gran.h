@@ -43,6 +43,7 @@
 #include "contact_settings.h"
 #include "interaction_engine.h"
 #include "material_table.h"
+#include "particle_travel.h"
 
 #include <vector>
 
@@ -97,6 +98,17 @@ private:
   tri::InteractionEngine engine_;
   tri_liggghts::CandidateStore candidates_;
   int axis_offset_ = -1; // where the separating axis starts in a pair's history values
+  // Pairs within reach that the travel proof passed over while listing (no task): as tasks they
+  // would be proven apart and change nothing (their history is clear: the evaluation that kept
+  // their gap cleared it). `before`: the number of tasks listed before it, so that the fastest
+  // pair is looked for in the order of the neighbour list, as among tasks.
+  struct PassedPair {
+    std::size_t before;
+    tri_liggghts::PairGeometry geometry;
+    tagint tag_i, tag_j;
+  };
+  std::vector<PassedPair> passed_;
+  tri_liggghts::ParticleTravel travel_;
 
   void collect_tasks();
   void report_failure();

@@ -423,3 +423,110 @@ TEST(CandidateCache, ReachFollowsTheRelativeMotion) {
   b.state.v = Vector3d(std::numeric_limits<double>::quiet_NaN(), 0, 0);
   EXPECT_EQ(candidate_reach(a, b, coherence, cutoff, dt), coherence * cutoff);
 }
+
+// rigid_motion_bound: no vertex of a rock moves farther than |dx| + 2 sin(theta / 2) r between
+// two random poses, and the bound is nearly reached (a vertex at the bounding radius, turned
+// about an axis across it).
+TEST(CandidateCache, RigidMotionBoundHoldsForEveryVertex) {
+  const Shape s = rock(40, 3);
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  double tightest = 0.0;
+  for (int k = 0; k < 2000; ++k) {
+    RigidPose then, now;
+    then.x = Vector3d(u(rng), u(rng), u(rng));
+    then.q = Eigen::Quaterniond(Eigen::AngleAxisd(3.0 * u(rng), Vector3d(u(rng), u(rng), 1).normalized()));
+    const double scale = std::pow(10.0, -6.0 + 5.0 * (u(rng) + 1.0) / 2.0); // small and large steps
+    now.x = then.x + scale * Vector3d(u(rng), u(rng), u(rng));
+    now.q = Eigen::Quaterniond(Eigen::AngleAxisd(scale * 1e3 * u(rng),
+                                                 Vector3d(u(rng), 1, u(rng)).normalized())) * then.q;
+    then.radius = now.radius = s.bounding_radius;
+    then.frame = now.frame = &s.soa;
+    const double bound = rigid_motion_bound(then, now);
+    double moved = 0.0;
+    for (std::size_t i = 0; i < s.soa.x.size(); ++i) {
+      const Vector3d p(s.soa.x[i], s.soa.y[i], s.soa.z[i]);
+      moved = std::max(moved, ((now.q * p + now.x) - (then.q * p + then.x)).norm());
+    }
+    ASSERT_LE(moved, bound * (1.0 + 1e-12) + 1e-15) << "pose pair " << k;
+    tightest = std::max(tightest, moved / bound);
+  }
+  EXPECT_GT(tightest, 0.9);
+  RigidPose other = RigidPose{};
+  other.radius = s.bounding_radius; // another frame: no bound
+  EXPECT_EQ(rigid_motion_bound(other, RigidPose{}), std::numeric_limits<double>::infinity());
+}
+
+// The travel proof (candidate_cache.h): a host keeps each particle's running motion sum and,
+// before evaluating a pair, asks proves_apart_by_travel; where it holds, the host takes the
+// zero result and touches nothing. Over moving, rotating rock pairs that meet and part again,
+// that is bitwise what a full evaluation gives (result and history), every pair it passes over
+// is at least the cutoff apart by brute force, and it passes over most of the apart steps.
+// A new epoch, or a contact (clear_gap), ends the proof.
+TEST(CandidateCache, TravelProofPassesOverOnlyPairsThatAreApart) {
+  const double eps = 1e-4, dt = 1e-5, cutoff = 2.0 * eps;
+  long long passed = 0, apart_steps = 0;
+  for (int pair = 0; pair < 4; ++pair) {
+    const RockPairPath path(rock(pair % 2 ? 40 : 20, 11 + pair),
+                            rock(pair / 2 ? 40 : 20, 21 + pair), 700 + pair);
+    double h_ref[kHistoryDoubles] = {}, h_got[kHistoryDoubles] = {}, axis[3] = {0, 0, 0};
+    InteractionScratch scratch_ref, scratch_got;
+    CandidateCache cache;
+    TriangleSoA wa, wb;
+    Travel travel{0.0, 0.0, 1};
+    RigidPose last_a, last_b;
+    const int steps = 2000;
+    for (int step = 0; step < steps; ++step) {
+      const double t = double(step) / steps;
+      const double d = 0.0026 + 0.002 * std::abs(std::cos(M_PI * t));
+      Body a, b;
+      path.at(Vector3d(0.01, -0.02, 0.03), d, 0.0008 * std::sin(5 * t), 1.5 * t, -2.0 * t, 1.5,
+              -2.0, eps, wa, wb, a, b);
+      if (step > 0) { // the host's sums
+        travel.a += rigid_motion_bound(last_a, a.pose);
+        travel.b += rigid_motion_bound(last_b, b.pose);
+      }
+      last_a = a.pose;
+      last_b = b.pose;
+      const std::string what = "pair " + std::to_string(pair) + " step " + std::to_string(step);
+      ContactStats st_ref, st_got;
+      const PairForceResult ref =
+          body_interaction(a, b, settings(true), dt, h_ref, scratch_ref, st_ref);
+      apart_steps += ref.contacts_after == 0;
+      if (cache.proves_apart_by_travel(travel, cutoff)) {
+        ++passed;
+        ASSERT_NO_FATAL_FAILURE(expect_bitwise(ref, PairForceResult{}, what));
+        ASSERT_NO_FATAL_FAILURE(expect_same_history(h_ref, h_got, what));
+        std::vector<TrianglePairIndex> all;
+        for (int i = 0; i < wa.num_triangles(); ++i)
+          for (int j = 0; j < wb.num_triangles(); ++j)
+            all.push_back({i, j});
+        std::vector<TrianglePairDistance> out(all.size());
+        brute_force_distances(wa, wb, all.data(), static_cast<int>(all.size()), out.data());
+        for (const TrianglePairDistance &r : out)
+          ASSERT_GE(r.distance, cutoff) << what;
+        continue;
+      }
+      const PairForceResult got =
+          body_interaction(a, b, settings(true, 0.25), dt, h_got, scratch_got, st_got,
+                           SeparationCache{axis, true, &cache, false, travel});
+      ASSERT_NO_FATAL_FAILURE(expect_bitwise(ref, got, what));
+      ASSERT_NO_FATAL_FAILURE(expect_same_history(h_ref, h_got, what));
+    }
+    // Another epoch (the host renumbered its atoms): the kept proof no longer counts.
+    EXPECT_FALSE(cache.proves_apart_by_travel(Travel{travel.a, travel.b, 2}, cutoff));
+  }
+  std::printf("travel proof: %lld of %lld apart steps passed over\n", passed, apart_steps);
+  EXPECT_GT(passed, apart_steps / 2);
+
+  // A contact drops the proof with the gap.
+  CandidateCache cache;
+  cache.keep_travel(Travel{1.0, 2.0, 5}, 1e-3, 0.1);
+  EXPECT_TRUE(cache.proves_apart_by_travel(Travel{1.0002, 2.0003, 5}, 2e-4));
+  EXPECT_FALSE(cache.proves_apart_by_travel(Travel{1.0005, 2.0004, 5}, 2e-4));
+  EXPECT_FALSE(cache.proves_apart_by_travel(Travel{1.0, 2.0, 0}, 2e-4)); // no sums kept
+  cache.clear_gap();
+  EXPECT_FALSE(cache.proves_apart_by_travel(Travel{1.0, 2.0, 5}, 2e-4));
+  cache.keep_travel(Travel{1.0, 2.0, 5}, std::numeric_limits<double>::quiet_NaN(), 0.1);
+  EXPECT_FALSE(cache.proves_apart_by_travel(Travel{1.0, 2.0, 5}, 2e-4));
+}
