@@ -36,17 +36,21 @@ namespace tri_liggghts {
 
 class CandidateStore {
 public:
-  void begin_step() {
+  // `slots`: how many slots the host may name this step, if it knows (pair tri/gran: its
+  // neighbour pairs, of which it asks for those within reach).
+  void begin_step(std::size_t slots = 0) {
     ++step_;
     touched_ = 0;
     hints_.swap(next_hints_);
-    next_hints_.clear();
+    next_hints_.assign(slots, nullptr);
   }
   tri::CandidateCache *entry(std::size_t slot, std::uint64_t key) {
-    // The hint of a slot kHintAhead further is fetched now: a host asks for its slots in
-    // order, and each entry (one per task, each on lines of its own) missed the cache.
-    if (slot + kHintAhead < hints_.size() && hints_[slot + kHintAhead])
-      __builtin_prefetch(hints_[slot + kHintAhead]);
+    // The hints of slots kHintAhead further are fetched now: a host asks for its slots in
+    // order, and each entry (one per task, each on lines of its own) missed the cache. Two of
+    // them: a host may skip slots (pairs out of reach), which have none.
+    for (std::size_t ahead = slot + kHintAhead; ahead < slot + kHintAhead + 2; ++ahead)
+      if (ahead < hints_.size() && hints_[ahead])
+        __builtin_prefetch(hints_[ahead]);
     Entry *e = slot < hints_.size() ? hints_[slot] : nullptr;
     if (!e || e->key != key)
       e = find_or_add(key);

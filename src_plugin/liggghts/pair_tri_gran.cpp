@@ -70,8 +70,14 @@ void PairTriGran::collect_tasks() {
   const bool coherent = settings_.interaction.coherence > 0.0;
   tasks_.clear();
   passed_.clear();
-  candidates_.begin_step();
-  std::size_t slot = 0; // the store's hint slots: every pair asked for, listed or passed
+  std::size_t neighbour_pairs = 0;
+  for (int ii = 0; ii < list->inum; ++ii)
+    neighbour_pairs += static_cast<std::size_t>(list->numneigh[list->ilist[ii]]);
+  candidates_.begin_step(neighbour_pairs);
+  // The store's hint slots: a pair's place in the neighbour list, which stays the same until the
+  // next rebuild (counting only the pairs within reach, every pair after one that came within
+  // reach or left it named another's entry, and was looked up).
+  std::size_t slot = 0;
   const double cutoff = particles_->epsilon() + particles_->epsilon(); // body_interaction's
   // Every neighbour pair every step, most of them apart: the arrays in locals, which the
   // stores below cannot change (through atom-> they are reloaded for every pair).
@@ -86,7 +92,7 @@ void PairTriGran::collect_tasks() {
     const int *jlist = firstneigh[i];
     const double xi = x[i][0], yi = x[i][1], zi = x[i][2], ri = radius[i];
     const int jnum = numneigh[i];
-    for (int jj = 0; jj < jnum; ++jj) {
+    for (int jj = 0; jj < jnum; ++jj, ++slot) {
       const int j = jlist[jj] & NEIGHMASK;
       const double dx = xi - x[j][0], dy = yi - x[j][1], dz = zi - x[j][2];
       const double reach = ri + radius[j];
@@ -104,7 +110,7 @@ void PairTriGran::collect_tasks() {
       double *history = values && tangential ? values : nullptr;
       double *axis = values && settings_.separation ? values + axis_offset_ : nullptr;
       tri::CandidateCache *candidates =
-          coherent ? candidates_.entry(slot++,
+          coherent ? candidates_.entry(slot,
                                         tri_liggghts::CandidateStore::pair_key(tag[i], tag[j]))
                    : nullptr;
       const bool swapped = tag[j] < tag[i];
