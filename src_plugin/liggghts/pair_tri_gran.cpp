@@ -114,6 +114,10 @@ void PairTriGran::collect_tasks() {
                                         tri_liggghts::CandidateStore::pair_key(tag[i], tag[j]))
                    : nullptr;
       const bool swapped = tag[j] < tag[i];
+      if (candidates) {
+        travel_.touch(*particles_, atom, i);
+        travel_.touch(*particles_, atom, j);
+      }
       if (candidates && candidates->proves_apart_by_travel(
                             swapped ? travel_.of(j, i) : travel_.of(i, j), cutoff)) {
         passed_.push_back({tasks_.size(),
@@ -189,7 +193,7 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
   const bool update_history = shearupdate_ != 0;
   // Atoms are renumbered only where the neighbour lists are rebuilt (exchange, sorting,
   // insertion; the setup of a run).
-  travel_.update(*particles_, atom, neighbor->ago == 0);
+  travel_.begin_step(atom, neighbor->ago == 0);
   collect_tasks();
 
   task_geometry_.resize(tasks_.size());
