@@ -46,6 +46,27 @@ bool covers_after(double dx, double angle, double r, double reach) {
   return cache.covers(&after, wa, &other, wb, 2e-4);
 }
 
+// Two rocks that meet and part again (pair 0..3: 20 or 40 triangles each), and what a test
+// keeps for them: the histories of a reference and of the tested evaluation, the kept axis,
+// scratch, candidates and world triangles.
+struct MeetingPair {
+  RockPairPath path;
+  double h_ref[kHistoryDoubles] = {}, h_got[kHistoryDoubles] = {}, axis[3] = {0, 0, 0};
+  InteractionScratch scratch_ref, scratch_got;
+  CandidateCache cache;
+  TriangleSoA wa, wb;
+  explicit MeetingPair(int pair)
+      : path(rock(pair % 2 ? 40 : 20, 11 + pair), rock(pair / 2 ? 40 : 20, 21 + pair),
+             700 + pair) {}
+  // The bodies at time t in [0, 1]: centre distance 4.6 -> 2.6 -> 4.6 mm with a sideways sweep,
+  // slow spins: a few um a step over 2000 steps.
+  void at(double t, double eps, Body &a, Body &b) {
+    const double d = 0.0026 + 0.002 * std::abs(std::cos(M_PI * t));
+    path.at(Vector3d(0.01, -0.02, 0.03), d, 0.0008 * std::sin(5 * t), 1.5 * t, -2.0 * t, 1.5,
+            -2.0, eps, wa, wb, a, b);
+  }
+};
+
 } // namespace
 
 // D = |dx| + 2 sin(angle / 2) r: just inside the reach the list covers, just outside it does
@@ -236,32 +257,23 @@ TEST(CandidateCache, KeptCandidatesChangeNothingOnMovingRotatingPairs) {
   const double eps = 1e-4, dt = 1e-5;
   long long kept_steps = 0, separated = 0, touching = 0, searched = 0, listed = 0, ran = 0;
   for (int pair = 0; pair < 4; ++pair) {
-    const RockPairPath path(rock(pair % 2 ? 40 : 20, 11 + pair),
-                            rock(pair / 2 ? 40 : 20, 21 + pair), 700 + pair);
-    double h_ref[kHistoryDoubles] = {}, h_got[kHistoryDoubles] = {}, axis[3] = {0, 0, 0};
-    InteractionScratch scratch_ref, scratch_got;
-    CandidateCache cache;
-    TriangleSoA wa, wb;
+    MeetingPair m(pair);
     const int steps = 2000;
     for (int step = 0; step < steps; ++step) {
-      const double t = double(step) / steps;
-      // centre distance 4.6 -> 2.6 -> 4.6 mm with a sideways sweep, slow spins: a few um a step
-      const double d = 0.0026 + 0.002 * std::abs(std::cos(M_PI * t));
       Body a, b;
-      path.at(Vector3d(0.01, -0.02, 0.03), d, 0.0008 * std::sin(5 * t), 1.5 * t, -2.0 * t, 1.5,
-              -2.0, eps, wa, wb, a, b);
+      m.at(double(step) / steps, eps, a, b);
       ContactStats st_ref, st_got;
       const PairForceResult ref =
-          body_interaction(a, b, settings(true), dt, h_ref, scratch_ref, st_ref);
+          body_interaction(a, b, settings(true), dt, m.h_ref, m.scratch_ref, st_ref);
       const PairForceResult got =
-          body_interaction(a, b, settings(true, 0.25), dt, h_got, scratch_got, st_got,
-                           SeparationCache{axis, true, &cache});
+          body_interaction(a, b, settings(true, 0.25), dt, m.h_got, m.scratch_got, st_got,
+                           SeparationCache{m.axis, true, &m.cache});
       const std::string what = "pair " + std::to_string(pair) + " step " + std::to_string(step);
       ASSERT_NO_FATAL_FAILURE(expect_bitwise(ref, got, what));
-      ASSERT_NO_FATAL_FAILURE(expect_same_history(h_ref, h_got, what));
+      ASSERT_NO_FATAL_FAILURE(expect_same_history(m.h_ref, m.h_got, what));
       kept_steps += st_got.candidates_kept;
       if (st_got.candidates_kept > 0) { // the kept list's pairs, and those the kernel ran
-        listed += cache.count();
+        listed += m.cache.count();
         ran += st_got.triangle_pairs_tested;
       }
       separated += st_got.bodies_separated;
@@ -269,7 +281,7 @@ TEST(CandidateCache, KeptCandidatesChangeNothingOnMovingRotatingPairs) {
       if (st_got.bodies_separated == 0) {
         ++searched;
         ASSERT_NO_FATAL_FAILURE(
-            expect_brute_force_pairs(wa, wb, eps, scratch_got.triangle_contacts, what));
+            expect_brute_force_pairs(m.wa, m.wb, eps, m.scratch_got.triangle_contacts, what));
       } else {
         ASSERT_EQ(ref.contacts_after, 0) << what;
       }
@@ -467,21 +479,13 @@ TEST(CandidateCache, TravelProofPassesOverOnlyPairsThatAreApart) {
   const double eps = 1e-4, dt = 1e-5, cutoff = 2.0 * eps;
   long long passed = 0, apart_steps = 0;
   for (int pair = 0; pair < 4; ++pair) {
-    const RockPairPath path(rock(pair % 2 ? 40 : 20, 11 + pair),
-                            rock(pair / 2 ? 40 : 20, 21 + pair), 700 + pair);
-    double h_ref[kHistoryDoubles] = {}, h_got[kHistoryDoubles] = {}, axis[3] = {0, 0, 0};
-    InteractionScratch scratch_ref, scratch_got;
-    CandidateCache cache;
-    TriangleSoA wa, wb;
+    MeetingPair m(pair);
     Travel travel{0.0, 0.0, 1};
     RigidPose last_a, last_b;
     const int steps = 2000;
     for (int step = 0; step < steps; ++step) {
-      const double t = double(step) / steps;
-      const double d = 0.0026 + 0.002 * std::abs(std::cos(M_PI * t));
       Body a, b;
-      path.at(Vector3d(0.01, -0.02, 0.03), d, 0.0008 * std::sin(5 * t), 1.5 * t, -2.0 * t, 1.5,
-              -2.0, eps, wa, wb, a, b);
+      m.at(double(step) / steps, eps, a, b);
       if (step > 0) { // the host's sums
         travel.a += rigid_motion_bound(last_a, a.pose);
         travel.b += rigid_motion_bound(last_b, b.pose);
@@ -491,30 +495,30 @@ TEST(CandidateCache, TravelProofPassesOverOnlyPairsThatAreApart) {
       const std::string what = "pair " + std::to_string(pair) + " step " + std::to_string(step);
       ContactStats st_ref, st_got;
       const PairForceResult ref =
-          body_interaction(a, b, settings(true), dt, h_ref, scratch_ref, st_ref);
+          body_interaction(a, b, settings(true), dt, m.h_ref, m.scratch_ref, st_ref);
       apart_steps += ref.contacts_after == 0;
-      if (cache.proves_apart_by_travel(travel, cutoff)) {
+      if (m.cache.proves_apart_by_travel(travel, cutoff)) {
         ++passed;
         ASSERT_NO_FATAL_FAILURE(expect_bitwise(ref, PairForceResult{}, what));
-        ASSERT_NO_FATAL_FAILURE(expect_same_history(h_ref, h_got, what));
+        ASSERT_NO_FATAL_FAILURE(expect_same_history(m.h_ref, m.h_got, what));
         std::vector<TrianglePairIndex> all;
-        for (int i = 0; i < wa.num_triangles(); ++i)
-          for (int j = 0; j < wb.num_triangles(); ++j)
+        for (int i = 0; i < m.wa.num_triangles(); ++i)
+          for (int j = 0; j < m.wb.num_triangles(); ++j)
             all.push_back({i, j});
         std::vector<TrianglePairDistance> out(all.size());
-        brute_force_distances(wa, wb, all.data(), static_cast<int>(all.size()), out.data());
+        brute_force_distances(m.wa, m.wb, all.data(), static_cast<int>(all.size()), out.data());
         for (const TrianglePairDistance &r : out)
           ASSERT_GE(r.distance, cutoff) << what;
         continue;
       }
       const PairForceResult got =
-          body_interaction(a, b, settings(true, 0.25), dt, h_got, scratch_got, st_got,
-                           SeparationCache{axis, true, &cache, false, travel});
+          body_interaction(a, b, settings(true, 0.25), dt, m.h_got, m.scratch_got, st_got,
+                           SeparationCache{m.axis, true, &m.cache, false, travel});
       ASSERT_NO_FATAL_FAILURE(expect_bitwise(ref, got, what));
-      ASSERT_NO_FATAL_FAILURE(expect_same_history(h_ref, h_got, what));
+      ASSERT_NO_FATAL_FAILURE(expect_same_history(m.h_ref, m.h_got, what));
     }
     // Another epoch (the host renumbered its atoms): the kept proof no longer counts.
-    EXPECT_FALSE(cache.proves_apart_by_travel(Travel{travel.a, travel.b, 2}, cutoff));
+    EXPECT_FALSE(m.cache.proves_apart_by_travel(Travel{travel.a, travel.b, 2}, cutoff));
   }
   std::printf("travel proof: %lld of %lld apart steps passed over\n", passed, apart_steps);
   EXPECT_GT(passed, apart_steps / 2);
