@@ -48,10 +48,11 @@
 // pass each other at speed, the proof lasts several times longer than with D_a + D_b.
 //
 // A cheaper proof of the same gap, for two particles: the host keeps, per particle, a running
-// sum T of the bound above over its steps, T += |x - x'| + 2 sin(theta' / 2) r from one force
-// evaluation to the next (Travel, restarted whenever the host renumbers its atoms: an epoch).
-// Every vertex has moved at most T - T0 since a moment when T was T0 (triangle inequality over
-// the steps), so a gap g proven at that moment still holds, less the travel since, while
+// sum T of the bound above, T += |x - x'| + 2 sin(theta' / 2) r from the pose at its last update
+// to the current one (rigid_motion_bound; Travel, restarted whenever the host renumbers its
+// atoms: an epoch). Every vertex has moved at most T - T0 since a moment when T was T0 (triangle
+// inequality over the updates), so a gap g proven at that moment still holds, less the travel
+// since, while
 //   g - (T_a - T_a0) - (T_b - T_b0) - slack >= cutoff.
 // Two subtractions and a compare on values the host has at hand: a pile's neighbour pairs that
 // stay apart for many steps (most of them) are passed over without their poses, their kept gap
