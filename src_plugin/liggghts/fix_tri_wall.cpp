@@ -244,6 +244,15 @@ tri::PairForceResult FixTriWall::interact(int k, double dt, bool update_history,
   return tri::body_interaction(particle, task.wall, s, dt, history.data(), scratch, stats, cache);
 }
 
+void FixTriWall::prefetch(const Task &t) {
+  if (t.candidates)
+    t.candidates->prefetch();
+  const char *h = reinterpret_cast<const char *>(history_[t.atom] + t.mesh * tri::kHistoryDoubles);
+  for (std::size_t offset = 0; offset < tri::kHistoryDoubles * sizeof(double); offset += 64)
+    __builtin_prefetch(h + offset);
+  __builtin_prefetch(axis(t.atom, t.mesh));
+}
+
 void FixTriWall::compute(bool update_history) {
   const double start = MPI_Wtime();
   collect_tasks();
@@ -259,6 +268,8 @@ void FixTriWall::compute(bool update_history) {
                 prepare(static_cast<int>(k), update_history, node_scratch_[thread]);
               },
               [&](std::size_t k, tri::InteractionScratch &scratch, tri::ContactStats &stats) {
+                if (k + kPrefetchAhead < ntasks_)
+                  prefetch(tasks_[k + kPrefetchAhead]);
                 return interact(static_cast<int>(k), dt, update_history, scratch, stats);
               });
   if (engine_.failed()) {

@@ -92,6 +92,11 @@ private:
 
   void compute(bool update_history);
   void collect_tasks();
+  // A task's kept state (candidates, the atom's history and axis for this mesh) lies wherever
+  // its entry and atom are: asked for kPrefetchAhead tasks ahead, as pair tri/gran does, it
+  // arrives while the tasks before it run.
+  static constexpr std::size_t kPrefetchAhead = 2;
+  void prefetch(const Task &t);
   // A task's first work, on the engine's thread that evaluates it: its wall patch and Body, its
   // particle's Body record; then whether its kept gap or axis proves it apart from the
   // particle's pose (tri::proven_apart: no world-frame particle triangles needed; the other
