@@ -25,11 +25,26 @@ void CandidateCache::record(const RigidPose *rigid, const TriangleSoA &t, Pose &
   }
 }
 
-double rigid_motion_bound(const RigidPose &then, const RigidPose &now) {
-  if (!(now.radius > 0.0) || now.radius != then.radius || now.frame != then.frame)
-    return std::numeric_limits<double>::infinity();
+namespace {
+
+// Whether two poses place the same body-frame vertices, so that the header's bound applies. A
+// pose without a radius bounds nothing (a body whose host did not describe it).
+bool same_frame(const RigidPose &then, const RigidPose &now) {
+  return now.radius > 0.0 && now.radius == then.radius && now.frame == then.frame;
+}
+
+// The rotation's part of the bound: 2 sin(theta / 2) r.
+double turn_bound(const RigidPose &then, const RigidPose &now) {
   const Eigen::Quaterniond turn = now.q * then.q.conjugate();
-  return (now.x - then.x).norm() + 2.0 * turn.vec().norm() * now.radius;
+  return 2.0 * turn.vec().norm() * now.radius;
+}
+
+} // namespace
+
+double rigid_motion_bound(const RigidPose &then, const RigidPose &now) {
+  if (!same_frame(then, now))
+    return std::numeric_limits<double>::infinity();
+  return (now.x - then.x).norm() + turn_bound(then, now);
 }
 
 double CandidateCache::displacement(const Pose &then, const RigidPose *rigid, const TriangleSoA &t,
@@ -39,14 +54,12 @@ double CandidateCache::displacement(const Pose &then, const RigidPose *rigid, co
     return kUnbounded;
   if (rigid) {
     const RigidPose &p0 = then.pose;
-    // A pose without a radius bounds nothing (a body whose host did not describe it).
-    if (!(rigid->radius > 0.0) || rigid->radius != p0.radius || rigid->frame != p0.frame)
+    if (!same_frame(p0, *rigid))
       return kUnbounded;
-    const Eigen::Quaterniond turn = rigid->q * p0.q.conjugate();
     magnitude = std::max(rigid->x.cwiseAbs().maxCoeff(), p0.x.cwiseAbs().maxCoeff()) +
                 rigid->radius;
     const Eigen::Vector3d shift = rigid->x - p0.x;
-    return (along ? along->dot(shift) : shift.norm()) + 2.0 * turn.vec().norm() * rigid->radius;
+    return (along ? along->dot(shift) : shift.norm()) + turn_bound(p0, *rigid);
   }
   const std::size_t n = t.x.size();
   if (then.vertices.size() != 3 * n || (along && n == 0))
