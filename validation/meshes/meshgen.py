@@ -5,6 +5,9 @@ Standard library only, so every validation script (and plain python3) can import
   python3 meshgen.py icosphere LEVEL RADIUS out.stl   # 20 * 4**LEVEL triangles
   python3 meshgen.py cube N SIDE out.stl              # N x N squares per face: 12 N^2 triangles
   python3 meshgen.py plane HALF_WIDTH out.stl [N]     # a square at z = 0, normal +z: 2 N^2 triangles
+  python3 meshgen.py platonic NAME D out.stl          # tetrahedron cube octahedron dodecahedron
+                                                      # icosahedron, volume-equivalent diameter D
+  python3 meshgen.py icosphere_eq LEVEL D out.stl     # an icosphere of volume-equivalent diameter D
 """
 import math
 import sys
@@ -140,6 +143,66 @@ def voxels(cells, side):
     return verts, faces
 
 
+def volume(verts, faces):
+    """Volume of a closed, outward-oriented mesh (signed tetrahedra from the origin)."""
+    return mass_inertia(verts, faces, 1.0)[0]
+
+
+def volume_equivalent(verts, faces, diameter):
+    """The mesh scaled about the origin to the volume of a sphere of the given diameter."""
+    k = (math.pi / 6.0 * diameter ** 3 / volume(verts, faces)) ** (1.0 / 3.0)
+    return [tuple(k * c for c in p) for p in verts], faces
+
+
+def _outward(verts, faces):
+    """Faces of a convex mesh containing the origin, each turned so its normal points away from
+    the origin."""
+    out = []
+    for a, b, c in faces:
+        pa, pb, pc = verts[a], verts[b], verts[c]
+        e1 = [pb[k] - pa[k] for k in range(3)]
+        e2 = [pc[k] - pa[k] for k in range(3)]
+        n = (e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+             e1[0] * e2[1] - e1[1] * e2[0])
+        cen = [(pa[k] + pb[k] + pc[k]) / 3.0 for k in range(3)]
+        out.append((a, b, c) if sum(n[k] * cen[k] for k in range(3)) > 0 else (a, c, b))
+    return out
+
+
+def platonic(name, circumradius=1.0):
+    """A Platonic solid centred at the origin with its vertices at `circumradius`: tetrahedron
+    (4 triangles), cube (12), octahedron (8), dodecahedron (12 pentagons, fanned: 36),
+    icosahedron (20)."""
+    if name == "tetrahedron":
+        v = [(1, 1, 1), (1, -1, -1), (-1, 1, -1), (-1, -1, 1)]
+        f = [(0, 1, 2), (0, 1, 3), (0, 2, 3), (1, 2, 3)]
+    elif name == "cube":
+        v, f = cube(1, 2.0)
+    elif name == "octahedron":
+        v = [(1, 0, 0), (-1, 0, 0), (0, 1, 0), (0, -1, 0), (0, 0, 1), (0, 0, -1)]
+        f = [(x, y, z) for x in (0, 1) for y in (2, 3) for z in (4, 5)]
+    elif name == "icosahedron":
+        v, f = icosphere(0, 1.0)
+    elif name == "dodecahedron":
+        # the dual of the icosahedron: a vertex at each face centre, a pentagon around each vertex
+        iv, iface = icosphere(0, 1.0)
+        v = [tuple(sum(iv[i][k] for i in tri) / 3.0 for k in range(3)) for tri in iface]
+        f = []
+        for j, p in enumerate(iv):
+            ring = [k for k, tri in enumerate(iface) if j in tri]
+            # order the 5 face centres by angle about the axis p
+            u = [v[ring[0]][k] - p[k] for k in range(3)]
+            w = (p[1] * u[2] - p[2] * u[1], p[2] * u[0] - p[0] * u[2], p[0] * u[1] - p[1] * u[0])
+            ring.sort(key=lambda k: math.atan2(sum((v[k][i] - p[i]) * w[i] for i in range(3)),
+                                               sum((v[k][i] - p[i]) * u[i] for i in range(3))))
+            f += [(ring[0], ring[i], ring[i + 1]) for i in range(1, 4)]
+    else:
+        raise ValueError("unknown Platonic solid " + name)
+    r = max(math.sqrt(sum(c * c for c in p)) for p in v)
+    v = [tuple(circumradius * c / r for c in p) for p in v]
+    return v, _outward(v, f)
+
+
 def write_stl(path, verts, faces, name="mesh"):
     with open(path, "w") as out:
         out.write(f"solid {name}\n")
@@ -166,5 +229,11 @@ if __name__ == "__main__":
     elif kind == "plane":
         write_stl(sys.argv[3], *plane(float(sys.argv[2]),
                                       int(sys.argv[4]) if len(sys.argv) > 4 else 1), "plane")
+    elif kind == "platonic":
+        write_stl(sys.argv[4], *volume_equivalent(*platonic(sys.argv[2]), float(sys.argv[3])),
+                  sys.argv[2])
+    elif kind == "icosphere_eq":
+        write_stl(sys.argv[4], *volume_equivalent(*icosphere(int(sys.argv[2]), 1.0),
+                                                  float(sys.argv[3])), "icosphere")
     else:
         sys.exit(__doc__)
