@@ -2,12 +2,13 @@
 """Bulk packing (validation/bulk): poured beds of triangulated particles against LIGGGHTS spheres.
 
   python3 validation/bulk/run_bulk.py [--quick] [--study ico platonic] [--Y 5e6 5e7]
-      [--n 200] [--sphere-seeds 5] [--cases NAME ...] [--exe liggghts-tri] [--liggghts liggghts]
+      [--n 200] [--width-d 5] [--sphere-seeds 5] [--tri-seeds 1] [--cases NAME ...] [--exe liggghts-tri] [--liggghts liggghts]
       [--work /tmp/bulk/work] [--label NAME] [--reuse]
   /usr/bin/python3 validation/bulk/plot_bulk.py results/bulk_NAME.json
 
 N particles of volume-equivalent diameter d = 4 mm (density 2500) are placed at once at random
-(fix insert/pack, overlap check) in a tall region of a column periodic in x and y, W = 5 d wide,
+(fix insert/pack, overlap check) in a tall region of a column periodic in x and y, W = 5 d wide
+(--width-d),
 and rain at 1 m/s (fix viscous, gamma = m g / 1 m/s) onto a mesh floor (fix mesh/surface of a
 plane STL). After the pour the drag is taken off and the bed settles until its translational
 kinetic energy is below 1e-3 N m g d (at most 0.3 s). Material: LIGGGHTS hooke (youngsModulus Y,
@@ -26,7 +27,9 @@ Studies:
 Solid fraction: phi = (sum of the volumes, mass / density, of the particles whose centres lie in
 the slab) / (W^2 x slab height), the slab from 1.5 d above the floor to 1.5 d below the top of
 the bed; the top is the mean centre height of the highest W^2/d^2 particles (one layer) plus
-d/2. `lo`/`hi` give phi for the slab's two ends moved by +-d/4 (the estimator's boundary noise).
+d/2. `lo`/`hi` give phi for the slab's two ends moved by +-d/4 (the estimator's boundary noise);
+`phi_cut` counts instead the part of each particle's volume-equivalent sphere inside the slab (a
+smoother estimator: exact for spheres, an approximation for the other shapes).
 
 Every run is one process (nice -n 10, OMP_NUM_THREADS=1), one after the other. Prints the table
 (case, N, phi, ratio to the spheres of the same study and Y, wall time per step) and writes
@@ -53,7 +56,6 @@ RHO = 2500.0
 MASS = RHO * math.pi / 6.0 * D ** 3
 G = 9.81
 V_FALL = 1.0                # terminal speed while raining (m/s)
-WIDTH_D = 5                 # box width in d
 # time steps (s): spheres about 8-10 % of LIGGGHTS's Rayleigh time, mesh particles about 6.5 %
 # of their contact time (fix tri/particles' check prints it)
 DT_SPHERE = {5e6: 2e-5, 5e7: 8e-6}
@@ -66,24 +68,26 @@ BAKER = {"tetrahedron": (0.51, 0.64), "cube": (0.54, 0.67), "octahedron": (0.52,
 REACH = {"ico": 0.0023, "platonic": 0.0042}
 
 
-def cases(study, ys, sphere_seeds):
+def cases(study, ys, sphere_seeds, tri_seeds):
     out = []
     if study == "ico":
         for y in ys:
             for s in range(sphere_seeds):
                 out.append(dict(name="spheres", study=study, Y=y, kind="sphere", seed=s))
             for level, layer in ((1, "inside"), (2, "inside"), (3, "inside"), (2, "outside")):
-                out.append(dict(name=f"ico{20 * 4 ** level}_{layer}", study=study, Y=y,
-                                kind="tri", shape=f"icosphere{level}", ntri=20 * 4 ** level,
-                                layer=layer, seed=0))
+                for s in range(tri_seeds):
+                    out.append(dict(name=f"ico{20 * 4 ** level}_{layer}", study=study, Y=y,
+                                    kind="tri", shape=f"icosphere{level}", ntri=20 * 4 ** level,
+                                    layer=layer, seed=s))
     else:
         y = ys[0]
         for s in range(sphere_seeds):
             out.append(dict(name="spheres", study=study, Y=y, kind="sphere", seed=s))
         for p in PLATONIC:
             v, f = meshgen.platonic(p)
-            out.append(dict(name=p, study=study, Y=y, kind="tri", shape=p, ntri=len(f),
-                            layer="inside", seed=0))
+            for s in range(tri_seeds):
+                out.append(dict(name=p, study=study, Y=y, kind="tri", shape=p, ntri=len(f),
+                                layer="inside", seed=s))
     return out
 
 
@@ -98,9 +102,9 @@ def shape_file(shape, meshdir):
     return path
 
 
-def geometry(study, n):
+def geometry(study, n, width_d):
     """Box width and height, insertion region, pour time: the same for every case of a study."""
-    w = WIDTH_D * D
+    w = width_d * D
     reach = REACH[study]
     vol = math.pi / 6.0 * D ** 3
     bed = n * vol / (0.45 * w * w)                       # the loosest bed expected
@@ -149,12 +153,27 @@ def solid_fraction(rows, w):
         inside = [m for m, z in rows if lo <= z < hi]
         return sum(m / RHO for m in inside) / (w * w * (hi - lo)), len(inside)
 
+    def below(zc, h, r):
+        """Volume of a sphere of radius r centred at height zc below the plane z = h."""
+        t = min(max(h - (zc - r), 0.0), 2 * r)
+        return math.pi * t * t * (3 * r - t) / 3.0
+
+    def phi_cut(lo, hi):
+        if hi <= lo:
+            return float("nan")
+        tot = 0.0
+        for m, z in rows:
+            r = (3.0 * m / RHO / (4.0 * math.pi)) ** (1.0 / 3.0)
+            tot += below(z, hi, r) - below(z, lo, r)
+        return tot / (w * w * (hi - lo))
+
     z0, z1 = 1.5 * D, top - 1.5 * D
     val, count = phi(z0, z1)
     shifted = [phi(z0 + a, z1 + b)[0] for a in (-D / 4, D / 4) for b in (-D / 4, D / 4)]
     shifted = [s for s in shifted if s == s]
     return dict(phi=val, n_slab=count, slab_d=(z1 - z0) / D, top_d=top / D,
-                lo=min(shifted) if shifted else val, hi=max(shifted) if shifted else val)
+                lo=min(shifted) if shifted else val, hi=max(shifted) if shifted else val,
+                phi_cut=phi_cut(z0, z1))
 
 
 def parse_screen(path):
@@ -196,17 +215,29 @@ def run_case(case, args, geo, meshdir, floor):
     if not (args.reuse and os.path.exists(dump)):
         if os.path.exists(dump):
             os.remove(dump)
-        t0 = time.time()
-        with open(screen, "w") as f:
-            r = subprocess.run(cmd, cwd=HERE, env=valtools.run_env(1), stdout=f,
-                               stderr=subprocess.STDOUT)
-        wall = time.time() - t0
+        for attempt in range(3):
+            t0 = time.time()
+            with open(screen, "w") as f:
+                r = subprocess.run(cmd, cwd=HERE, env=valtools.run_env(1), stdout=f,
+                                   stderr=subprocess.STDOUT)
+            wall = time.time() - t0
+            # Open MPI's singleton start-up now and then fails before LIGGGHTS starts
+            # ("ORTE_ERROR_LOG: Data unpack would read past end of buffer"): start again
+            if r.returncode == 0 or "LIGGGHTS (Version" in open(screen, errors="replace").read():
+                break
+            print(f"  {tag}: MPI start-up failed, again", flush=True)
         if r.returncode != 0 or not os.path.exists(dump):
             print(f"  {tag}: FAILED (exit {r.returncode}), see {screen}", flush=True)
             res = dict(case, tag=tag, failed=True, exit=r.returncode, wall_s=wall,
                        command=" ".join(cmd))
             res.update(parse_screen(screen))
             return res
+    wall_file = os.path.join(out, "wall_s.txt")
+    if wall is not None:
+        with open(wall_file, "w") as f:
+            f.write(f"{wall:.3f}\n")
+    elif os.path.exists(wall_file):
+        wall = float(open(wall_file).read())
     res = dict(case, tag=tag, failed=False, wall_s=wall, dt=v["dt"], N=args.n,
                command=" ".join(cmd))
     res.update(parse_screen(screen))
@@ -216,36 +247,47 @@ def run_case(case, args, geo, meshdir, floor):
 
 
 def table(results):
-    lines = []
+    """The Markdown table: one row per (study, Y, case), means over seeds."""
+    def stats(xs):
+        m = sum(xs) / len(xs)
+        sd = (sum((x - m) ** 2 for x in xs) / (len(xs) - 1)) ** 0.5 if len(xs) > 1 else 0.0
+        return m, sd
+
     ref = {}
     for r in results:
         if r["name"] == "spheres" and not r["failed"]:
-            ref.setdefault((r["study"], r["Y"]), []).append(r["phi"])
-    hdr = ("| study | Y (Pa) | case | triangles | N | dt (s) | phi | phi range (slab +-d/4) | "
-           "ratio to spheres | settled at (s) | ms/step | wall (s) |")
-    lines += [hdr, "| " + " | ".join(["---"] * 12) + " |"]
+            ref.setdefault((r["study"], r["Y"]), []).append(r)
+    lines = ["| study | Y (Pa) | case | triangles | N | seeds | dt (s) | phi (centres) | "
+             "ratio to spheres | phi range, slab ends +-d/4 | phi_cut | ratio (phi_cut) | "
+             "settled at (s) | ms/step | wall (s) |",
+             "| " + " | ".join(["---"] * 15) + " |"]
     groups = {}
     for r in results:
         groups.setdefault((r["study"], r["Y"], r["name"]), []).append(r)
     for (study, y, name), rs in groups.items():
         ok = [r for r in rs if not r["failed"]]
         if not ok:
-            lines.append(f"| {study} | {y:g} | {name} | | {rs[0].get('N', '')} | | FAILED | | | | | |")
+            lines.append(f"| {study} | {y:g} | {name} | | | {len(rs)} | | FAILED |" + " |" * 7)
             continue
-        phis = [r["phi"] for r in ok]
-        mean = sum(phis) / len(phis)
-        sd = (sum((p - mean) ** 2 for p in phis) / (len(phis) - 1)) ** 0.5 if len(phis) > 1 else 0
+        m, sd = stats([r["phi"] for r in ok])
+        mc, sdc = stats([r["phi_cut"] for r in ok])
         sref = ref.get((study, y))
-        sm = sum(sref) / len(sref) if sref else None
-        phi_s = f"{mean:.4f}" + (f" +- {sd:.4f} ({len(phis)} seeds)" if len(phis) > 1 else "")
-        rng = f"{min(r['lo'] for r in ok):.4f}-{max(r['hi'] for r in ok):.4f}"
-        ratio = f"{mean / sm:.4f}" if sm else ""
+        sm = stats([r["phi"] for r in sref])[0] if sref else None
+        smc = stats([r["phi_cut"] for r in sref])[0] if sref else None
+        pm = f"{m:.4f}" + (f" +- {sd:.4f}" if len(ok) > 1 else "")
+        pc = f"{mc:.4f}" + (f" +- {sdc:.4f}" if len(ok) > 1 else "")
+        rng = f"{min(r['lo'] for r in ok):.3f}-{max(r['hi'] for r in ok):.3f}"
+        ratio = f"{m / sm:.3f}" if sm else ""
+        ratioc = f"{mc / smc:.3f}" if smc else ""
         ms = sum(r["ms_per_step"] for r in ok) / len(ok)
         wall = [r["wall_s"] for r in ok if r["wall_s"]]
         walls = f"{sum(wall) / len(wall):.0f}" if wall else ""
         tend = f"{sum(r.get('t_end', float('nan')) for r in ok) / len(ok):.3f}"
+        fails = len(rs) - len(ok)
+        seeds = f"{len(ok)}" + (f" (+{fails} failed)" if fails else "")
         lines.append(f"| {study} | {y:g} | {name} | {ok[0].get('ntri', '')} | {ok[0]['N']} | "
-                     f"{ok[0]['dt']:g} | {phi_s} | {rng} | {ratio} | {tend} | {ms:.3f} | {walls} |")
+                     f"{seeds} | {ok[0]['dt']:g} | {pm} | {ratio} | {rng} | {pc} | {ratioc} | "
+                     f"{tend} | {ms:.3f} | {walls} |")
     return "\n".join(lines)
 
 
@@ -256,7 +298,9 @@ def main():
     ap.add_argument("--study", nargs="+", default=["ico", "platonic"], choices=["ico", "platonic"])
     ap.add_argument("--Y", nargs="+", type=float, default=[5e6, 5e7])
     ap.add_argument("--n", type=int, default=200)
+    ap.add_argument("--width-d", type=float, default=5.0, help="box width in d (default 5)")
     ap.add_argument("--sphere-seeds", type=int, default=5)
+    ap.add_argument("--tri-seeds", type=int, default=1, help="seeds (insertion, orientation) per mesh case")
     ap.add_argument("--cases", nargs="+", help="only these case names (e.g. spheres ico320_inside cube)")
     ap.add_argument("--exe", default=valtools.default_exe())
     ap.add_argument("--liggghts", default="liggghts")
@@ -271,24 +315,24 @@ def main():
     os.makedirs(args.work, exist_ok=True)
     meshdir = os.path.join(args.work, "meshes")
     os.makedirs(meshdir, exist_ok=True)
-    w = WIDTH_D * D
+    w = args.width_d * D
     floor = os.path.join(meshdir, "floor.stl")
     meshgen.write_stl(floor, *meshgen.plane(w / 2), "floor")
     print(valtools.machine_line(), flush=True)
     print(f"liggghts-tri: {args.exe}\nliggghts: {args.liggghts}", flush=True)
     results = []
     for study in args.study:
-        geo = geometry(study, args.n)
+        geo = geometry(study, args.n, args.width_d)
         print(f"study {study}: box {geo['W'] * 1e3:.0f} mm wide, insertion z {geo['zlo'] * 1e3:.0f}"
               f"-{geo['zhi'] * 1e3:.0f} mm, pour {geo['tpour']:.3f} s", flush=True)
-        for case in cases(study, args.Y, args.sphere_seeds):
+        for case in cases(study, args.Y, args.sphere_seeds, args.tri_seeds):
             if args.cases and case["name"] not in args.cases:
                 continue
             r = run_case(case, args, geo, meshdir, floor)
             r["geometry"] = geo
             results.append(r)
             if not r["failed"]:
-                print(f"  {r['tag']}: phi {r['phi']:.4f} ({r['n_slab']} in a slab of "
+                print(f"  {r['tag']}: phi {r['phi']:.4f}, phi_cut {r['phi_cut']:.4f} ({r['n_slab']} in a slab of "
                       f"{r['slab_d']:.2f} d, top {r['top_d']:.2f} d), settled at "
                       f"{r.get('t_end', float('nan')):.3f} s, {r['ms_per_step']:.3f} ms/step, "
                       f"wall {r['wall_s'] or 0:.0f} s", flush=True)
