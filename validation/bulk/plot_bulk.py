@@ -6,7 +6,8 @@
 icospheres.png: phi against the triangle count (`layer inside`, and 320 triangles with `layer
 outside`), one panel per Young's modulus, the spheres' mean as a line with the +-2 % target band.
 platonic.png: the Platonic solids' poured phi against Baker & Kudrolli's loose and dense bands
-(PRE 82, 061304, 2010, plastic dice, +-0.01), with the spheres of the same pour.
+(PRE 82, 061304, 2010, plastic dice, +-0.01), with the spheres of the same pour; diamonds: the
+bed shaken by its floor (run_bulk.py --tap), where run.
 """
 import argparse
 import json
@@ -100,6 +101,14 @@ def main():
                 ax.vlines([i], min(r["lo"] for r in mine), max(r["hi"] for r in mine), color="r",
                           lw=0.8, label="slab ends +-d/4" if i == 0 else None)
                 ax.annotate(f"{p:.3f}", (i + 0.08, p), fontsize=8)
+                tap = [r["tapped"] for r in mine if "tapped" in r]
+                if tap:
+                    pt = mean([t["phi"] for t in tap])
+                    ax.plot([i + 0.15], [pt], "D", color="darkgreen",
+                            label="liggghts-tri, shaken (centres)" if i == 0 else None)
+                    ax.plot([i + 0.15], [mean([t["phi_cut"] for t in tap])], "D", mfc="none",
+                            color="darkgreen", label="the same, phi_cut" if i == 0 else None)
+                    ax.annotate(f"{pt:.3f}", (i + 0.22, pt), fontsize=7, color="darkgreen")
         sph = [r["phi"] for r in pla if r["name"] == "spheres"]
         if sph:
             ax.axhline(mean(sph), color="k", lw=1, ls="--",

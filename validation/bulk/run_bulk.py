@@ -3,7 +3,7 @@
 
   python3 validation/bulk/run_bulk.py [--quick] [--study ico platonic] [--Y 5e6 5e7]
       [--n 200] [--width-d 5] [--sphere-seeds 5] [--tri-seeds 1] [--cases NAME ...] [--exe liggghts-tri] [--liggghts liggghts]
-      [--work /tmp/bulk/work] [--label NAME] [--reuse]
+      [--work /tmp/bulk/work] [--label NAME] [--tap CYCLES] [--reuse]
   /usr/bin/python3 validation/bulk/plot_bulk.py results/bulk_NAME.json
 
 N particles of volume-equivalent diameter d = 4 mm (density 2500) are placed at once at random
@@ -66,6 +66,8 @@ BAKER = {"tetrahedron": (0.51, 0.64), "cube": (0.54, 0.67), "octahedron": (0.52,
          "dodecahedron": (0.51, 0.63), "icosahedron": (0.50, 0.59)}
 # reach (bounding radius + layer) that sizes a study's insertion region, the same for all its cases
 REACH = {"ico": 0.0023, "platonic": 0.0042}
+# --tap N: the floor shaken sinusoidally for N cycles of 20 ms, peak acceleration 1.5 g
+TAP_PERIOD, TAP_GAMMA = 0.02, 1.5
 
 
 def cases(study, ys, sphere_seeds, tri_seeds):
@@ -113,12 +115,14 @@ def geometry(study, n, width_d):
     return dict(W=w, H=zhi + 0.005, zlo=zlo, zhi=zhi, tpour=1.05 * zhi / V_FALL + 0.05)
 
 
-def deck_vars(case, geo, n, out, meshdir, floor, quick):
+def deck_vars(case, geo, n, out, meshdir, floor, quick, tap):
     y = case["Y"]
     v = dict(W=geo["W"], H=geo["H"], floor=floor, Y=y, N=n, zlo=geo["zlo"], zhi=geo["zhi"],
              seed=[67867967, 86028121, 15485863, 32452843, 49979687, 104395301][case["seed"] % 6],
              gamma=MASS * G / V_FALL, out=out, tpour=geo["tpour"], tchunk=0.02,
-             nsettle=3 if quick else 15, kemin=1e-3 * n * MASS * G * D)
+             nsettle=3 if quick else 15, kemin=1e-3 * n * MASS * G * D,
+             ncycles=tap if case["study"] == "platonic" else 0, tapperiod=TAP_PERIOD,
+             tapamp=TAP_GAMMA * G * (TAP_PERIOD / (2 * math.pi)) ** 2)
     if case["kind"] == "tri":
         v.update(dt=DT_TRI[y], shape=shape_file(case["shape"], meshdir), layer=case["layer"],
                  oseed=99 + case["seed"])
@@ -184,6 +188,9 @@ def parse_screen(path):
     m = re.findall(r"bulk: settled atoms (\d+) t ([0-9.eE+-]+) ke ([0-9.eE+-]+)", text)
     if m:
         info.update(atoms=int(m[-1][0]), t_end=float(m[-1][1]), ke_end=float(m[-1][2]))
+    m = re.findall(r"bulk: tapped atoms (\d+) t ([0-9.eE+-]+) ke ([0-9.eE+-]+)", text)
+    if m:
+        info.update(t_tapped=float(m[-1][1]), ke_tapped=float(m[-1][2]))
     m = re.findall(r"bulk: poured atoms (\d+) t ([0-9.eE+-]+) ke ([0-9.eE+-]+)", text)
     if m:
         info.update(t_pour=float(m[-1][1]), ke_pour=float(m[-1][2]))
@@ -209,7 +216,7 @@ def run_case(case, args, geo, meshdir, floor):
     dump = os.path.join(out, "final.dump")
     exe = args.exe if case["kind"] == "tri" else args.liggghts
     deck = os.path.join(HERE, "in.tri" if case["kind"] == "tri" else "in.spheres")
-    v = deck_vars(case, geo, args.n, out, meshdir, floor, args.quick)
+    v = deck_vars(case, geo, args.n, out, meshdir, floor, args.quick, args.tap)
     cmd = ["nice", "-n", "10"] + valtools.deck_command(exe, deck, v)
     wall = None
     if not (args.reuse and os.path.exists(dump)):
@@ -243,6 +250,9 @@ def run_case(case, args, geo, meshdir, floor):
     res.update(parse_screen(screen))
     res["ms_per_step"] = 1e3 * res["loop_s"] / res["steps"] if res.get("steps") else None
     res.update(solid_fraction(read_dump(dump), geo["W"]))
+    tapped = os.path.join(out, "tapped.dump")
+    if v["ncycles"] > 0 and os.path.exists(tapped):
+        res["tapped"] = solid_fraction(read_dump(tapped), geo["W"])
     return res
 
 
@@ -288,6 +298,20 @@ def table(results):
         lines.append(f"| {study} | {y:g} | {name} | {ok[0].get('ntri', '')} | {ok[0]['N']} | "
                      f"{seeds} | {ok[0]['dt']:g} | {pm} | {ratio} | {rng} | {pc} | {ratioc} | "
                      f"{tend} | {ms:.3f} | {walls} |")
+    tapped = [r for r in results if not r["failed"] and "tapped" in r]
+    if tapped:
+        lines += ["", "| study | Y (Pa) | case | seeds | phi poured | phi tapped | phi_cut poured | "
+                  "phi_cut tapped | settled at (s) |", "| " + " | ".join(["---"] * 9) + " |"]
+        tg = {}
+        for r in tapped:
+            tg.setdefault((r["study"], r["Y"], r["name"]), []).append(r)
+        for (study, y, name), rs in tg.items():
+            def mm(f):
+                return sum(f(r) for r in rs) / len(rs)
+            lines.append(f"| {study} | {y:g} | {name} | {len(rs)} | {mm(lambda r: r['phi']):.4f} | "
+                         f"{mm(lambda r: r['tapped']['phi']):.4f} | {mm(lambda r: r['phi_cut']):.4f} | "
+                         f"{mm(lambda r: r['tapped']['phi_cut']):.4f} | "
+                         f"{mm(lambda r: r.get('t_tapped', float('nan'))):.3f} |")
     return "\n".join(lines)
 
 
@@ -306,6 +330,8 @@ def main():
     ap.add_argument("--liggghts", default="liggghts")
     ap.add_argument("--work", default="/tmp/bulk/work")
     ap.add_argument("--label", default="run")
+    ap.add_argument("--tap", type=int, default=0,
+                    help="platonic study: shake the settled bed for this many floor cycles (tap.in)")
     ap.add_argument("--reuse", action="store_true", help="reuse final.dump files of earlier runs")
     args = ap.parse_args()
     if args.quick:
@@ -341,6 +367,11 @@ def main():
                         print("    " + r[key], flush=True)
                 for wl in r["warnings"]:
                     print("    " + wl, flush=True)
+                if "tapped" in r:
+                    t = r["tapped"]
+                    print(f"    tapped ({args.tap} cycles): phi {t['phi']:.4f}, phi_cut "
+                          f"{t['phi_cut']:.4f}, settled at {r.get('t_tapped', float('nan')):.3f} s",
+                          flush=True)
             else:
                 for wl in r["warnings"]:
                     print("    " + wl, flush=True)
