@@ -1,5 +1,6 @@
 #include "shape.h"
 
+#include "inner_surface.h"
 #include "mesh_validation.h"
 #include "penetration_depth.h"
 #include "smooth_surface.h"
@@ -114,6 +115,33 @@ void check_solid_inertia(const std::string &name, const Eigen::Vector3d &moments
   throw ShapeError(os.str());
 }
 
+namespace {
+
+// The kernel's surface `inner` (the mesh offset inward by shape.layer) and the numbers the
+// contact search reads of it.
+void measure_kernel_surface(Shape &shape, const TriangleMesh &inner) {
+  shape.soa = to_soa(inner);
+  double e2_min = std::numeric_limits<double>::infinity(), e2_max = 0.0, sum = 0.0, r2 = 0.0;
+  for (int t = 0; t < inner.num_triangles(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const double e2 = (inner.corner(t, (k + 1) % 3) - inner.corner(t, k)).squaredNorm();
+      e2_min = std::min(e2_min, e2);
+      e2_max = std::max(e2_max, e2);
+      sum += std::sqrt(e2);
+    }
+  for (const Eigen::Vector3d &p : inner.vertices)
+    r2 = std::max(r2, p.squaredNorm());
+  shape.min_edge_length = std::sqrt(e2_min);
+  shape.max_edge_length = std::sqrt(e2_max);
+  shape.mean_edge_length = sum / (3.0 * inner.num_triangles());
+  shape.thinnest_extent = thinnest_extent(shape.soa);
+  shape.edge_bulge = edge_bulges(inner);
+  shape.surface_lift = max_lift(shape.edge_bulge);
+  shape.inner_radius = std::sqrt(r2);
+}
+
+} // namespace
+
 Shape make_shape(std::string name, TriangleMesh mesh) {
   try {
     validate_mesh(mesh);
@@ -130,7 +158,7 @@ Shape make_shape(std::string name, TriangleMesh mesh) {
   for (Eigen::Vector3d &p : mesh.vertices)
     p = to_body * (p - mp.centre_of_mass);
   shape.mesh = std::move(mesh);
-  shape.soa = to_soa(shape.mesh);
+  shape.surface = to_soa(shape.mesh);
   shape.principal_axes = mp.principal_axes;
   shape.centre_of_mass = mp.centre_of_mass;
   Eigen::Quaterniond q(mp.principal_axes);
@@ -146,23 +174,25 @@ Shape make_shape(std::string name, TriangleMesh mesh) {
     r2 = std::max(r2, p.squaredNorm());
   shape.bounding_radius = std::sqrt(r2);
 
-  double e2_min = std::numeric_limits<double>::infinity(), e2_max = 0.0, sum = 0.0;
-  for (int t = 0; t < shape.mesh.num_triangles(); ++t)
-    for (int k = 0; k < 3; ++k) {
-      const double e2 = (shape.mesh.corner(t, (k + 1) % 3) - shape.mesh.corner(t, k)).squaredNorm();
-      e2_min = std::min(e2_min, e2);
-      e2_max = std::max(e2_max, e2);
-      sum += (shape.mesh.corner(t, k) - shape.mesh.corner(t, (k + 1) % 3)).norm();
-    }
-  shape.min_edge_length = std::sqrt(e2_min);
-  shape.max_edge_length = std::sqrt(e2_max);
-  shape.thinnest_extent = thinnest_extent(shape.soa);
-  shape.mean_edge_length = sum / (3.0 * shape.mesh.num_triangles());
-
   shape.convex = is_convex(shape.mesh, kConvexityTolerance * 2.0 * shape.bounding_radius);
-  shape.edge_bulge = edge_bulges(shape.mesh);
-  shape.surface_lift = max_lift(shape.edge_bulge);
+  measure_kernel_surface(shape, shape.mesh);
   return shape;
+}
+
+Shape with_soft_layer(Shape shape, double layer) {
+  TriangleMesh inner;
+  try {
+    inner = inner_surface(shape.mesh, layer);
+  } catch (const ShapeError &e) {
+    throw ShapeError("shape '" + shape.name + "': " + e.what());
+  }
+  shape.layer = layer;
+  measure_kernel_surface(shape, inner);
+  return shape;
+}
+
+double contact_reach(const Shape &shape, double epsilon) {
+  return std::max(shape.bounding_radius, shape.inner_radius + epsilon);
 }
 
 TriangleMesh scaled(TriangleMesh mesh, double factor) {

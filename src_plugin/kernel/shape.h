@@ -30,15 +30,23 @@ namespace tri {
 // signed distance is at most kConvexityTolerance x (2 x bounding_radius).
 constexpr double kConvexityTolerance = 1e-9;
 
+// Two surfaces. `mesh` is the given surface: the contact surface, and what mass, inertia, the
+// bounding radius and output refer to. `soa` and the numbers after `inertia_per_density` up to
+// `surface_lift` describe the surface the contact kernel measures: `mesh` offset inward by
+// `layer` (inner_surface.h), the same triangles in the same order; with layer 0 (make_shape)
+// it is `mesh` itself.
 struct Shape {
   std::string name;
   TriangleMesh mesh;   // body frame; unreferenced vertices removed
-  TriangleSoA soa;     // the same triangles, same order, as SoA
+  TriangleSoA surface; // mesh as SoA, same triangles, same order
+  double layer = 0.0;  // m: how far soa lies inside mesh (the soft layer, epsilon)
+  TriangleSoA soa;     // the inner surface (the kernel's), same triangles, same order
   double volume = 0.0; // m^3
   // Principal moments about the centre of mass, ascending, per unit density: m^5
   // (x density in kg/m^3 = kg m^2). The body-frame inertia tensor is their diagonal matrix.
   Eigen::Vector3d inertia_per_density = Eigen::Vector3d::Zero();
-  double bounding_radius = 0.0; // max vertex distance from the centre of mass, m
+  double bounding_radius = 0.0; // max vertex distance of `mesh` from the centre of mass, m
+  double inner_radius = 0.0;    // max vertex distance of soa from the centre of mass, m
   double min_edge_length = 0.0; // shortest triangle edge, m
   double max_edge_length = 0.0; // longest triangle edge, m (sets the contact-patch link length)
   double mean_edge_length = 0.0; // mean over the 3 edges of every triangle, m (the mesh's
@@ -64,6 +72,17 @@ struct Shape {
 // keeping the rotation and offset back to the input frame (principal_axes, centre_of_mass,
 // input_orientation).
 Shape make_shape(std::string name, TriangleMesh mesh);
+
+// The shape with its kernel surface (soa and the numbers that describe it) offset inward by
+// `layer` (m, >= 0) from `mesh`, and its reach. Throws ShapeError ("shape '<name>': ...") when
+// the layer does not fit the shape (inner_surface.h).
+Shape with_soft_layer(Shape shape, double layer);
+
+// How far from the centre of mass a contact can reach (m): the given surface, or the kernel's
+// surface grown by the soft layer `epsilon` where that is farther (a layer outside the mesh:
+// `layer outside` of fix tri/particles). LIGGGHTS's radius, so its neighbour lists see every
+// contact.
+double contact_reach(const Shape &shape, double epsilon);
 
 // Uniformly scales a mesh about the origin (for the `scale` keyword). Throws ShapeError if
 // factor <= 0 or is not finite.

@@ -1,6 +1,6 @@
 // How fast particles close in on each other, from the particle-pair neighbour list that the
 // contact board holds (contact_board.h: published by pair tri/gran; every pair
-// whose bounding spheres, radius = bounding radius + epsilon, are within the neighbour skin).
+// whose bounding spheres, radius = the contact reach, are within the neighbour skin).
 // Read by fix tri/adapt_dt (to bound dt before a step); pair tri/gran measures its own tasks
 // (the pairs within reach) with pair_geometry as they run, on the threads, and publishes the
 // fastest approaching one for fix tri/particles (to recognise a step that carried a pair

@@ -52,7 +52,7 @@ struct DeepestContact {
 // What a source's material says about the scales of its contacts: the normal stiffness kn
 // (N/m) for each pair of types (atom type, atom type) or (atom type, wall type), the
 // characteristic velocity of the material fixes (m/s; 0 where the deck defines none) and, for
-// a wall, its soft layer (m; < 0: the particles' epsilon).
+// a wall, its soft layer (m; < 0: the particles' default for walls, FixTriParticles::default_wall_layer).
 struct MaterialHint {
   struct Stiffness {
     int itype = 0, jtype = 0;

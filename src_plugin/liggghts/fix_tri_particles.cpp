@@ -7,6 +7,7 @@
 
 #include "rigid_body.h"
 #include "seeded_random.h"
+#include "shape_error.h"
 
 #include "peratom_restart.h"
 #include "restart_shapes.h"
@@ -60,6 +61,7 @@ FixTriParticles::FixTriParticles(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, n
   density_ = opt.density;
   epsilon_ = opt.epsilon;
   epsilon_auto_ = opt.epsilon_auto;
+  layer_inside_ = opt.layer_inside;
   check_timestep_every_ = opt.check_timestep_every;
   assign_by_type_ = opt.assign_by_type;
   assign_seed_ = opt.assign_seed;
@@ -69,6 +71,10 @@ FixTriParticles::FixTriParticles(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, n
   templates_ = opt.templates;
 
   shapes_ = tri_liggghts::build_shapes(lmp, opt);
+  if (!epsilon_auto_) {
+    set_soft_layers();
+    tri_liggghts::check_shapes_against_epsilon(lmp, shapes_, epsilon_);
+  }
   monitor_ = std::make_unique<tri_liggghts::RunSafetyMonitor>(lmp, epsilon_);
 
   peratom_flag = 1;
@@ -109,7 +115,7 @@ void FixTriParticles::post_force(int) { monitor_->after_pair_forces(board_); }
 void FixTriParticles::end_of_step() {
   monitor_->end_of_step(board_);
   if (check_timestep_every_ > 0 && update->ntimestep % check_timestep_every_ == 0)
-    tri_liggghts::check_timestep(lmp, board_, type_bodies(), epsilon_, false);
+    tri_liggghts::check_timestep(lmp, board_, type_bodies(), epsilon_, default_wall_layer(), false);
 }
 
 // A source removed between runs (unfix, another pair_style) leaves nothing behind; the
@@ -157,7 +163,7 @@ void FixTriParticles::set_inserted_shape(int i, int shape) {
 
 void FixTriParticles::apply_mass_and_radius(int i) {
   const tri::Shape &s = shapes_[shape_index(i)];
-  atom->radius[i] = s.bounding_radius + epsilon_;
+  atom->radius[i] = tri::contact_reach(s, epsilon_);
   atom->rmass[i] = density_ * s.volume;
   if (atom->density_flag)
     atom->density[i] = density_;
@@ -172,6 +178,7 @@ void FixTriParticles::init() {
 }
 
 void FixTriParticles::setup_pre_force(int) {
+  run_started_ = true;
   monitor_->new_run();
   if (epsilon_auto_ && !epsilon_resolved_)
     error->all(FLERR, "Fix tri/particles: 'epsilon' is required here: 'epsilon auto' (the "
@@ -183,7 +190,7 @@ void FixTriParticles::setup_pre_force(int) {
 // After the setup force evaluation: the time-step check sees the published neighbour list.
 void FixTriParticles::setup(int) {
   if (check_timestep_every_ >= 0)
-    tri_liggghts::check_timestep(lmp, board_, type_bodies(), epsilon_, true);
+    tri_liggghts::check_timestep(lmp, board_, type_bodies(), epsilon_, default_wall_layer(), true);
 }
 
 tri_liggghts::TypeBodies FixTriParticles::type_bodies() const {
@@ -191,15 +198,21 @@ tri_liggghts::TypeBodies FixTriParticles::type_bodies() const {
 }
 
 void FixTriParticles::resolve_epsilon() {
-  if (!epsilon_auto_ || epsilon_resolved_)
+  // With the layer inside, the radii do not depend on epsilon, so a source that publishes
+  // after the first (fix tri/wall initialises after pair tri/gran) may still widen it: the
+  // layer then covers every contact, walls included. With the layer outside, the pair has
+  // sized its cutoffs from the radii of the first choice.
+  const bool may_widen = layer_inside_ && !run_started_;
+  if (!epsilon_auto_ || (epsilon_resolved_ && !may_widen))
     return;
   const tri_liggghts::AutoEpsilon chosen =
       tri_liggghts::choose_auto_epsilon(lmp, board_, type_bodies());
-  if (!chosen.found)
+  if (!chosen.found || (epsilon_resolved_ && !(chosen.epsilon > epsilon_)))
     return;
   epsilon_ = chosen.epsilon;
   epsilon_resolved_ = true;
   monitor_->set_epsilon(epsilon_);
+  set_soft_layers();
   tri_liggghts::check_shapes_against_epsilon(lmp, shapes_, epsilon_);
   for (int i = 0; i < atom->nlocal; ++i)
     if (state_[i][kShape] != kUnset)
@@ -218,6 +231,23 @@ void FixTriParticles::resolve_epsilon() {
     if (logfile)
       std::fputs(line, logfile);
   }
+}
+
+void FixTriParticles::set_soft_layers() {
+  try {
+    for (tri::Shape &s : shapes_)
+      s = tri::with_soft_layer(std::move(s), layer_inside_ ? epsilon_ : 0.0);
+  } catch (const tri::ShapeError &e) {
+    const std::string msg = std::string("Fix tri/particles: ") + e.what() +
+                            " (or 'layer outside': the soft layer outside the mesh)";
+    error->all(FLERR, msg.c_str());
+  }
+}
+
+void FixTriParticles::given_surface(int i, tri::TriangleSoA &out) const {
+  const double *x = atom->x[i];
+  tri::transform_soa(shapes_[shape_index(i)].surface, orientation(i).toRotationMatrix(),
+                     Eigen::Vector3d(x[0], x[1], x[2]), out);
 }
 
 void FixTriParticles::pre_force(int) {
@@ -450,7 +480,7 @@ void FixTriParticles::write_restart(FILE *fp) {
   if (comm->me != 0)
     return;
   const std::vector<char> data =
-      tri_liggghts::encode(tri_liggghts::make_record(shapes_, epsilon_, density_));
+      tri_liggghts::encode(tri_liggghts::make_record(shapes_, epsilon_, density_, layer_inside_));
   const int size = static_cast<int>(data.size());
   fwrite(&size, sizeof(int), 1, fp);
   fwrite(data.data(), 1, data.size(), fp);
@@ -461,7 +491,7 @@ void FixTriParticles::restart(char *buf) {
   std::string msg;
   try {
     const std::string d = tri_liggghts::differences(
-        tri_liggghts::decode(buf), tri_liggghts::make_record(shapes_, epsilon_, density_));
+        tri_liggghts::decode(buf), tri_liggghts::make_record(shapes_, epsilon_, density_, layer_inside_));
     if (!d.empty())
       msg = "Fix tri/particles: this deck differs from the run that wrote the restart file: " + d;
   } catch (const std::runtime_error &e) {
@@ -475,12 +505,12 @@ double FixTriParticles::max_rad(int type) {
   double r = 0.0;
   if (assign_by_type_) {
     if (type >= 1 && type <= num_shapes())
-      r = shapes_[type - 1].bounding_radius;
+      r = reach(type - 1);
   } else {
-    for (const tri::Shape &s : shapes_)
-      r = std::max(r, s.bounding_radius);
+    for (int s = 0; s < num_shapes(); ++s)
+      r = std::max(r, reach(s));
   }
-  return r + epsilon_;
+  return r;
 }
 
 double FixTriParticles::memory_usage() {

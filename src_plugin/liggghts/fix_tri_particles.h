@@ -2,8 +2,11 @@
 // particle. It owns the shape templates and, per atom, the shape index, the orientation
 // quaternion and the angular momentum, as one LIGGGHTS per-atom array that is grown, copied,
 // migrated, sent to ghosts and written to restarts like any LIGGGHTS property. It sets
-// radius := bounding radius + epsilon (so LIGGGHTS's neighbour lists find every pair whose
-// soft layers can touch) and rmass := density * volume. World-frame triangles are built on
+// radius := the shape's contact reach (tri::contact_reach: the given mesh's bounding radius,
+// with `layer outside` plus epsilon; so LIGGGHTS's neighbour lists find every pair that can
+// touch) and rmass := density * volume. The contact kernel measures each shape's surface offset
+// inward by epsilon (`layer inside`, the default: kernel/inner_surface.h), so the given mesh
+// is the contact surface. World-frame triangles are built on
 // demand, once per force evaluation, for the atoms the contact styles and the output ask for.
 //
 // Shapes are built by shape_builder.h. It owns the contact board (contact_board.h) on which
@@ -121,9 +124,19 @@ public:
     return (atom->rmass[i] / s.volume) * s.inertia_per_density;
   }
   double epsilon() const { return epsilon_; }
+  // True with `layer inside` (the default): the soft layer lies inside the given meshes.
+  bool layer_inside() const { return layer_inside_; }
+  // A wall's soft layer when fix tri/wall gives none (m): none with the layer inside (a wall's
+  // mesh is its contact surface), the particles' epsilon with `layer outside`.
+  double default_wall_layer() const { return layer_inside_ ? 0.0 : epsilon_; }
+  // LIGGGHTS radius of a particle of shape s (tri::contact_reach).
+  double reach(int s) const { return tri::contact_reach(shapes_[s], epsilon_); }
+  // The given surface of owned atom i in the world frame (output: fix tri/vtk).
+  void given_surface(int i, tri::TriangleSoA &out) const;
   // `epsilon auto`: a contact style calls this at its init, after publishing its material on
-  // the board, before anything is sized from the radii (material_scales.h). Sets epsilon and
-  // the radii once; a no-op with an explicit epsilon or once resolved.
+  // the board, before anything is sized from the radii (material_scales.h). Sets epsilon, the
+  // shapes' inner surfaces and the radii; a no-op with an explicit epsilon. Once resolved, a
+  // later source before the first run may only widen it, and only with the layer inside.
   void resolve_epsilon();
   // The bodies each atom type can be (its shapes), for the contact styles' materials.
   tri_liggghts::TypeBodies type_bodies() const;
@@ -182,6 +195,8 @@ private:
   template <class Work> void once_this_evaluation(long long *stamp, Work work);
   double density_ = 0.0, epsilon_ = 0.0;
   bool epsilon_auto_ = false, epsilon_resolved_ = false;
+  bool layer_inside_ = true;
+  bool run_started_ = false; // epsilon auto is fixed once the first run has started
   int check_timestep_every_ = 0; // -1 off, 0 at setup, N: also every N steps
   bool assign_by_type_ = false, orient_random_ = false, orient_file_ = false;
   std::vector<std::pair<std::string, int>> templates_; // `template ID SHAPE`, shape index
@@ -197,6 +212,9 @@ private:
   void initialise_atom(int i, int shape = -1); // shape < 0: by the assign rule
   int initialise_unset_atoms();
   void apply_mass_and_radius(int i);
+  // Each shape's kernel surface for the current epsilon (tri::with_soft_layer); an ERROR naming
+  // the shape when the layer does not fit it.
+  void set_soft_layers();
 };
 
 } // namespace LAMMPS_NS

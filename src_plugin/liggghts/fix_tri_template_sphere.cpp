@@ -70,8 +70,8 @@ void FixTriTemplateSphere::announce() {
     return;
   char line[600];
   std::snprintf(line, sizeof line,
-                "tri/particles: template %s (radius %g m, mass %g kg) -> shape %s (bounding "
-                "radius+eps %g m, mass %g kg): its particles get the shape's radius and mass\n",
+                "tri/particles: template %s (radius %g m, mass %g kg) -> shape %s (reach "
+                "%g m, mass %g kg): its particles get the shape's radius and mass\n",
                 id, sphere_radius(), sphere_mass(), binding_.shape_name.c_str(), binding_.reach,
                 binding_.mass);
   if (screen)

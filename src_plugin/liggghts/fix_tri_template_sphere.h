@@ -1,9 +1,9 @@
 // particletemplate/sphere for liggghts-tri: LIGGGHTS's own FixTemplateSphere, registered
 // under the same name in place of it, and identical to it until fix tri/particles gives it a
 // shape (particle_insertion.h). From then on, for every particle the template generates:
-//   radius := the shape's reach, bounding radius + epsilon (LIGGGHTS's insertion overlap check
-//             and `all_in` region test use this radius, so a particle inserted without overlap
-//             touches no other particle, not even with its soft layer);
+//   radius := the shape's contact reach, the mesh's bounding radius (tri::contact_reach;
+//             LIGGGHTS's insertion overlap check and `all_in` region test use this radius, so
+//             a particle inserted without overlap does not overlap another's mesh);
 //   mass   := the shape's mass (fix tri/particles density x mesh volume);
 // and the template's mass and volume expectation, min/max radius and bounding radius, which
 // particledistribution/discrete and fix insert/* compute with (mass fractions into particle
@@ -26,7 +26,7 @@ public:
   struct Binding {
     int shape = -1;
     std::string shape_name;
-    double reach = 0.0;  // bounding radius + epsilon, m
+    double reach = 0.0;  // the shape's contact reach (tri::contact_reach), m
     double mass = 0.0;   // kg
     double volume = 0.0; // m^3
   };

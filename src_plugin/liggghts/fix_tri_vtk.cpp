@@ -110,8 +110,8 @@ void FixTriVTK::write_frame() {
   last_written_ = update->ntimestep;
 
   const int nlocal = atom->nlocal;
-  particles_->update_world_triangles(nlocal);
   tri::SurfaceCells cells;
+  tri::TriangleSoA surface;
   for (int i = 0; i < nlocal; ++i) {
     if (!(atom->mask[i] & groupbit) || particles_->shape_index(i) < 0)
       continue;
@@ -128,7 +128,8 @@ void FixTriVTK::write_frame() {
       values.force[k] = atom->f[i][k];
       values.torque[k] = atom->torque[i][k];
     }
-    cells.append_particle(particles_->world_triangles(i), values);
+    particles_->given_surface(i, surface);
+    cells.append_particle(surface, values);
   }
 
   const std::string step = std::to_string(update->ntimestep);

@@ -109,17 +109,16 @@ void FixTriWall::init() {
                   particles_->type_bodies().sphere, true, "fix tri/wall");
   board_slot_ = particles_->board().join(id, tri_liggghts::SourceKind::walls);
   tri_liggghts::MaterialHint hint = materials_.hint(atom->ntypes, wall_types);
-  hint.wall_epsilon = epsilon_; // < 0: the particles' epsilon
+  hint.wall_epsilon = epsilon_; // < 0: the particles' default for walls
   particles_->board().publish_material(board_slot_, hint);
   particles_->resolve_epsilon(); // `epsilon auto` without pair tri/gran: from this wall
-  if (epsilon_ < 0.0)
-    epsilon_ = particles_->epsilon();
-  // The mesh neighbour list finds triangles within radius (= bounding radius + particle
-  // epsilon) times LIGGGHTS's contact distance factor; widen it by the wall's layer.
+  layer_ = epsilon_ >= 0.0 ? epsilon_ : particles_->default_wall_layer();
+  // The mesh neighbour list finds triangles within radius (the particle's contact reach) times
+  // LIGGGHTS's contact distance factor; widen it by the wall's layer.
   double rmin = std::numeric_limits<double>::infinity();
   for (int s = 0; s < particles_->num_shapes(); ++s)
-    rmin = std::min(rmin, particles_->shape(s).bounding_radius + particles_->epsilon());
-  neighbor->register_contact_dist_factor(1.0 + epsilon_ / rmin);
+    rmin = std::min(rmin, particles_->reach(s));
+  neighbor->register_contact_dist_factor(1.0 + layer_ / rmin);
 }
 
 void FixTriWall::setup(int) { compute(false); }
@@ -202,7 +201,7 @@ void FixTriWall::build_wall(int k, std::vector<Eigen::Vector3d> &nodes,
   tri::Body &wall = task.wall;
   wall = tri::Body{};
   wall.triangles = &patch;
-  wall.epsilon = epsilon_;
+  wall.epsilon = layer_;
   wall.longest_edge = std::numeric_limits<double>::infinity();
   wall.min_edge = particles_->body(task.atom).min_edge;
   wall.state.x = motion.centre;

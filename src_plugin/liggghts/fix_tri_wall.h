@@ -70,7 +70,10 @@ private:
   class FixTriParticles *particles_ = nullptr;
   tri_liggghts::ContactSettings settings_;
   tri_liggghts::MaterialTable materials_;
-  double epsilon_ = -1.0; // < 0: the particles' epsilon
+  double epsilon_ = -1.0; // `epsilon E`; < 0: none given
+  // The wall's soft layer, m: E, or the particles' default for walls (none with the layer
+  // inside the particles: the wall's mesh is its contact surface).
+  double layer_ = 0.0;
   double **history_ = nullptr; // per atom: meshes_.size() * (kHistoryDoubles + 3)
   int values_per_atom_ = 0;
   // The separating axis of (atom a, mesh m), particle towards wall (body_interaction.h).

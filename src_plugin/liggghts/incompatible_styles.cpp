@@ -66,7 +66,7 @@ const Row fix_table[] = {
      "move/mesh, with fix tri/wall"},
     {"wall/gran",
      "it computes contacts of the walls with spheres of the bounding radius "
-     "(radius = bounding radius + epsilon), not with the particles' triangles",
+     "(radius = the mesh's bounding radius), not with the particles' triangles",
      "fix tri/wall mesh MESH_ID with a fix mesh/surface (a primitive plane or cylinder: mesh it "
      "as an STL file)"},
     {"wall/region", "it pushes on the particles' centres, as on point or sphere particles",
@@ -86,7 +86,7 @@ const Row fix_table[] = {
      "default) and fix tri/adapt_dt"},
     {"adapt",
      "it changes the atoms' radius or pair coefficients, while fix tri/particles sets "
-     "radius := bounding radius + epsilon and rmass := density x volume",
+     "radius := the shape's contact reach and rmass := density x volume",
      "none: size a shape with 'scale' (file) or 'size' (random rock) of fix tri/particles"},
 };
 

@@ -3,7 +3,7 @@
 // A LIGGGHTS sphere deck turned into a mesh-particle deck keeps most of its lines (gravity,
 // materials, mesh/surface walls, move/mesh, insertion, thermo, dumps), but the styles that
 // treat each atom as a sphere of its radius would silently compute nonsense on triangulated
-// particles: radius is the bounding radius + epsilon, orientation and angular momentum live in
+// particles: radius is the contact reach (the mesh's bounding radius), orientation and angular momentum live in
 // fix tri/particles, and contacts are between triangles. fix tri/particles calls
 // refuse_incompatible_styles() from its init(), so every run of such a deck stops before its
 // first step with an ERROR that names the style, its ID, why it cannot work, and its tri/

@@ -224,7 +224,7 @@ double longest_contact_time(const ContactBoard &board, const TypeBodies &bodies)
 }
 
 void check_timestep(LAMMPS_NS::LAMMPS *lmp, const ContactBoard &board, const TypeBodies &bodies,
-                    double epsilon, bool report) {
+                    double epsilon, double wall_layer, bool report) {
   const std::vector<ContactBoard::PublishedMaterial> mats = board.materials();
   const std::vector<Entry> all = entries(mats, bodies);
   if (all.empty())
@@ -244,7 +244,8 @@ void check_timestep(LAMMPS_NS::LAMMPS *lmp, const ContactBoard &board, const Typ
     const double v_ref = std::max(speeds.of(e.itype, e.jtype, e.wall), e.v_char);
     v_approach = std::max(v_approach, v_ref);
     const double overlap = tri::peak_overlap(e.kn, e.meff_max, v_ref);
-    const double layers = epsilon + (e.layers_extra >= 0.0 ? e.layers_extra : epsilon);
+    const double other = e.layers_extra >= 0.0 ? e.layers_extra : e.wall ? wall_layer : epsilon;
+    const double layers = epsilon + other;
     if (overlap / layers > deepest_fraction) {
       deepest_fraction = overlap / layers;
       deepest = &e;

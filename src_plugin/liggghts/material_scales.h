@@ -65,9 +65,9 @@ AutoEpsilon choose_auto_epsilon(LAMMPS_NS::LAMMPS *lmp, const ContactBoard &boar
 // The check, on every rank (collective), after a force evaluation (the particle-pair list is
 // published then). `report`: print the figures (at setup). WARNINGs and
 // the ERROR go through LIGGGHTS's error class. Does nothing where no source has published a
-// material (no contacts).
+// material (no contacts). `wall_layer`: the soft layer of a wall that gives none of its own.
 void check_timestep(LAMMPS_NS::LAMMPS *lmp, const ContactBoard &board, const TypeBodies &bodies,
-                    double epsilon, bool report);
+                    double epsilon, double wall_layer, bool report);
 
 // The longest undamped contact time pi sqrt(meff / kn) over the published pairs of types that
 // can touch, meff of the HEAVIEST shapes: how long one impact keeps two bodies together (fix

@@ -1,5 +1,5 @@
 // pair_style tri/gran: contact forces between triangulated particles (fix tri/particles).
-// LIGGGHTS's granular neighbour list (radius = bounding radius + epsilon) gives candidate
+// LIGGGHTS's granular neighbour list (radius = the contact reach) gives candidate
 // pairs; for each pair whose bounding spheres overlap, tri::body_interaction finds the
 // triangle pairs within the soft layers, reduces them to contact points and applies the
 // hooke/stiffness force law with friction; forces and torques go to both particles.

@@ -55,7 +55,7 @@ void bind_template(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::FixTriParticles &particles
   LAMMPS_NS::FixTriTemplateSphere::Binding b;
   b.shape = s;
   b.shape_name = shape.name;
-  b.reach = shape.bounding_radius + particles.epsilon();
+  b.reach = particles.reach(s);
   b.volume = shape.volume;
   b.mass = particles.density() * shape.volume;
   templ.bind(b);

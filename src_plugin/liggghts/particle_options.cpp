@@ -182,6 +182,11 @@ ParticleOptions parse_particle_options(int narg, char **arg, int first, LAMMPS_N
         o.epsilon_auto = false;
       }
       have_epsilon = true;
+    } else if (key == "layer") {
+      const std::string where = in.word("'inside' or 'outside' after 'layer'");
+      if (where != "inside" && where != "outside")
+        in.fail("'layer' expects 'inside' or 'outside', got '" + where + "'");
+      o.layer_inside = where == "inside";
     } else if (key == "check_timestep") {
       o.check_timestep_every = check_timestep_value(in);
     } else if (key == "orient") {

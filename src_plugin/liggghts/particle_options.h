@@ -7,7 +7,11 @@
 //                            density RHO [epsilon EPS | epsilon auto]
 //                            [orient random SEED | orient none | orient file]
 //                            [check_timestep setup | check_timestep N | check_timestep off]
+//                            [layer inside | layer outside]
 // epsilon auto (the default): the soft layer from the contact material (material_scales.h).
+// layer inside (the default): the soft layer lies inside the given mesh, which is the contact
+// surface (kernel/inner_surface.h); layer outside: it lies outside, the particles touch with
+// their meshes 2 epsilon apart (the convention of liggghts-tri before, for comparison).
 // check_timestep: the time-step check (tri/timestep_rule.h) at the start of every run (setup,
 // the default), also every N steps, or never.
 #pragma once
@@ -43,6 +47,7 @@ struct ParticleOptions {
   double density = 0.0;           // kg/m^3
   double epsilon = 0.0;           // soft-layer width, m (0 with epsilon_auto until resolved)
   bool epsilon_auto = false;      // `epsilon auto`, or no epsilon given
+  bool layer_inside = true;       // `layer inside` (default) or `layer outside`
   int check_timestep_every = 0;   // -1: off, 0: at setup only, N > 0: also every N steps
   bool orient_random = false;
   std::uint64_t orient_seed = 0;

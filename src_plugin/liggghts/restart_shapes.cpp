@@ -10,7 +10,9 @@
 namespace tri_liggghts {
 namespace {
 
-constexpr char kMagic[8] = {'t', 'r', 'i', '/', 'r', 's', 't', '2'};
+constexpr char kMagic[8] = {'t', 'r', 'i', '/', 'r', 's', 't', '3'};
+// The record before the layer field: every layer outside the meshes.
+constexpr char kMagicLayerOutside[8] = {'t', 'r', 'i', '/', 'r', 's', 't', '2'};
 
 template <class T> void put(std::vector<char> &out, const T &v) {
   const char *p = reinterpret_cast<const char *>(&v);
@@ -82,9 +84,11 @@ std::string names(const std::vector<ShapeRecord> &shapes) {
 
 } // namespace
 
-ParticlesRecord make_record(const std::vector<tri::Shape> &shapes, double epsilon, double density) {
+ParticlesRecord make_record(const std::vector<tri::Shape> &shapes, double epsilon, double density,
+                            bool layer_inside) {
   ParticlesRecord r;
   r.epsilon = epsilon;
+  r.layer_inside = layer_inside;
   r.density = density;
   for (const tri::Shape &s : shapes) {
     ShapeRecord sr;
@@ -103,6 +107,7 @@ std::vector<char> encode(const ParticlesRecord &r) {
   std::vector<char> out(kMagic, kMagic + sizeof kMagic);
   put(out, r.epsilon);
   put(out, r.density);
+  put(out, static_cast<std::int64_t>(r.layer_inside ? 1 : 0));
   put(out, static_cast<std::int64_t>(r.shapes.size()));
   for (const ShapeRecord &s : r.shapes) {
     put(out, static_cast<std::int64_t>(s.name.size()));
@@ -117,7 +122,8 @@ std::vector<char> encode(const ParticlesRecord &r) {
 }
 
 ParticlesRecord decode(const char *buf) {
-  if (std::memcmp(buf, kMagic, sizeof kMagic) != 0)
+  const bool layer_field = std::memcmp(buf, kMagic, sizeof kMagic) == 0;
+  if (!layer_field && std::memcmp(buf, kMagicLayerOutside, sizeof kMagic) != 0)
     throw std::runtime_error(
         "the restart file was written by an earlier liggghts-tri, whose restart files carry no "
         "shape record and cannot be read by this version: rerun the deck that wrote it");
@@ -125,6 +131,7 @@ ParticlesRecord decode(const char *buf) {
   ParticlesRecord r;
   r.epsilon = get<double>(p);
   r.density = get<double>(p);
+  r.layer_inside = layer_field && get<std::int64_t>(p) != 0;
   // Bounds against a damaged file (a count or length read from garbage); far above real use.
   const char *damaged = "the restart file's fix tri/particles record is damaged";
   const auto n = get<std::int64_t>(p);
@@ -157,6 +164,13 @@ std::string differences(const ParticlesRecord &file, const ParticlesRecord &deck
   };
   scalar("epsilon", file.epsilon, deck.epsilon);
   scalar("density", file.density, deck.density);
+  auto where = [](bool inside) { return inside ? "'layer inside'" : "'layer outside'"; };
+  if (file.layer_inside != deck.layer_inside)
+    d.push_back(std::string("the soft layer ") + where(file.layer_inside) +
+                " in the restart file" +
+                (file.layer_inside ? "" : " (every file before the layer moved inside)") + ", " +
+                where(deck.layer_inside) + " in this deck (give fix tri/particles " +
+                where(file.layer_inside) + " to continue it)");
   const std::size_t nf = file.shapes.size(), nd = deck.shapes.size();
   if (nf != nd)
     d.push_back(std::to_string(nf) + " shape" + (nf == 1 ? "" : "s") + " in the restart file (" +

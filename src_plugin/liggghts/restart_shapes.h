@@ -5,11 +5,15 @@
 // soft layer, so read_restart stops and says exactly what differs.
 //
 // Record (written by rank 0, all values native-endian, no padding, read with memcpy):
-//   8 bytes  "tri/rst2"                  magic and version
+//   8 bytes  "tri/rst3"                  magic and version
 //   double   epsilon (m), density (kg/m^3)
+//   int64    1 with the soft layer inside the meshes (`layer inside`), 0 outside
 //   int64    number of shapes
 //   per shape: int64 name length, the name's bytes, int64 triangle count, double volume (m^3),
 //              double bounding radius (m), 3 x double principal moments per density (m^5)
+// A "tri/rst2" record (the same without the layer field) was written when the soft layer always
+// lay outside the meshes: it reads as `layer outside`, so a deck that wants to continue it
+// says so, and one that does not is told why its particles would change.
 // Restart files of liggghts-tri before this record (a fingerprint, density, epsilon: three
 // doubles) are refused with a message that says so; they cannot be read.
 #pragma once
@@ -31,10 +35,12 @@ struct ShapeRecord {
 
 struct ParticlesRecord {
   double epsilon = 0.0, density = 0.0;
+  bool layer_inside = true;
   std::vector<ShapeRecord> shapes;
 };
 
-ParticlesRecord make_record(const std::vector<tri::Shape> &shapes, double epsilon, double density);
+ParticlesRecord make_record(const std::vector<tri::Shape> &shapes, double epsilon, double density,
+                            bool layer_inside);
 
 std::vector<char> encode(const ParticlesRecord &record);
 

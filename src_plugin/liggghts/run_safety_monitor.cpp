@@ -134,7 +134,8 @@ void RunSafetyMonitor::check_initial_overlaps(const ContactBoard &board) {
                 "Fix tri/particles: the run starts with intersecting surfaces (%lld particle "
                 "pair(s)%s; %lld particle-wall contact(s)): particles created inside each other "
                 "or inside a wall cannot be pushed apart reliably (the contact force acts in "
-                "the soft layers); create them at least 2 x epsilon apart",
+                "the soft layers); create them with their meshes apart (with 'layer outside': at "
+                "least 2 x epsilon apart)",
                 pair.penetrations, example, wall.penetrations);
   lmp_->error->all(FLERR, msg);
 }

@@ -41,7 +41,7 @@ tri::Shape build_shape(const ShapeSpec &spec) {
 // A particle wider than the box in a periodic direction would touch its own image.
 void check_fits_in_box(LAMMPS_NS::LAMMPS *lmp, const tri::Shape &s, double epsilon) {
   const LAMMPS_NS::Domain *domain = lmp->domain;
-  const double diameter = 2.0 * (s.bounding_radius + epsilon);
+  const double diameter = 2.0 * tri::contact_reach(s, epsilon);
   const double box_min = std::min({domain->xprd, domain->yprd, domain->zprd});
   if (domain->box_exist && diameter >= box_min) {
     const std::string msg = "Fix tri/particles: shape " + s.name + " (bounding diameter " +
@@ -92,11 +92,8 @@ std::vector<tri::Shape> build_shapes(LAMMPS_NS::LAMMPS *lmp, const ParticleOptio
                             std::to_string(shapes.size()) + " shapes)";
     lmp->error->all(FLERR, msg.c_str());
   }
-  if (options.epsilon_auto)
-    for (const tri::Shape &s : shapes)
-      check_fits_in_box(lmp, s, 0.0);
-  else
-    check_shapes_against_epsilon(lmp, shapes, options.epsilon);
+  for (const tri::Shape &s : shapes) // with epsilon once it is known and the layers are set
+    check_fits_in_box(lmp, s, 0.0);
   return shapes;
 }
 

@@ -125,7 +125,7 @@ def run_deck(ctx, deck, variables=None, ranks=1, expect_ok=True, env_extra=None,
     tri/stats column when the columns are known, then `variables`. `env_extra` adds to (and
     overrides) the environment, e.g. OMP_NUM_THREADS. Through mpirun when ranks > 1, or always
     with mpirun=True."""
-    values = {"dir": HERE}
+    values = {"dir": HERE, "layer": "inside"}
     if _stats_tool:
         values.update(stat_variables())
     values.update(variables or {})

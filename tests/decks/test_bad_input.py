@@ -54,6 +54,10 @@ BAD_PARTICLES = {
     "missing_epsilon": (f"{ROCK} density 2500", r"'epsilon' is required"),
     "no_shape": (TAIL, r"at least one 'shape'"),
     "too_large": (TOO_LARGE, r"does not fit"),
+    "layer_too_thick": ("shape r random ntri 20 size 0.004 seed 1 density 2500 epsilon 0.0015",
+                        r"shape 'r': the surface offset inward by the soft layer \(epsilon 0\.0015 "
+                        r"m\) is not valid: .*; epsilon \S+ m would fit \(or 'layer outside'"),
+    "bad_layer": (f"{ROCK} {TAIL} layer sideways", r"'layer' expects 'inside' or 'outside', got 'sideways'"),
 }
 # whole decks -> the error they must give
 BAD_DECKS = {

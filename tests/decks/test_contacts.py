@@ -30,10 +30,13 @@ def test_contact_forces(ctx):
     # within 1e-8 m, so lateral force and torque within 1e-4 of F (and F * h).
     rel = {"bf": 1e-12, "hybrid": 1e-4}
 
-    def pair_case(name, kernel, gap, yb=0.0, vxa=0.0, vxb=0.0, vzb=0.0, gamman=0.0, gammat=0.0):
+    # gap: between the meshes as given (< 0: they overlap). With the layer inside the meshes
+    # are the contact surfaces (overlap = -gap); with it outside they touch 2 EPS apart.
+    def pair_case(name, kernel, gap, yb=0.0, vxa=0.0, vxb=0.0, vzb=0.0, gamman=0.0, gammat=0.0,
+                  layer="inside"):
         xa, xb = -(h + gap / 2), h + gap / 2
         v = dict(MAT, xa=repr(xa), xb=repr(xb), yb=repr(yb), vxa=vxa, vxb=vxb, vzb=vzb,
-                 gamman=gamman, gammat=gammat, pairargs=f"kernel {kernel}")
+                 gamman=gamman, gammat=gammat, pairargs=f"kernel {kernel}", layer=layer)
         run_deck(ctx, "in.contact_pair", v)
         step, rows = last_frame(os.path.join(ctx.work, "contact.dump"))
         check(step == 0 and set(rows) == {1, 2},
@@ -44,7 +47,7 @@ def test_contact_forces(ctx):
         fa, fb, ta, tb = a[3:6], b[3:6], a[6:9], b[6:9]
         # Expected (n = +x from a to b): F_n = kn overlap - gamman m_eff v_n on b, friction
         # from b's sliding along z: history spring kt v dt plus damping, capped by mu F_n.
-        overlap = 2 * EPS - gap
+        overlap = (0.0 if layer == "inside" else 2 * EPS) - gap
         if overlap <= 0:
             fb_exp = [0.0, 0.0, 0.0]
         else:
@@ -70,18 +73,23 @@ def test_contact_forces(ctx):
                   f"{name}: torque on b {tb}, hand-computed {tb_exp} (tolerance {tol_t:g} N m)")
         print(f"{name}: f_b {fb} (hand {fb_exp}), torque a {ta} (hand {ta_exp})")
 
-    def wall_case(name, kernel, gap, eps_wall=None, vz=0.0, gamman=0.0):
+    # A wall's mesh is its contact surface; its own `epsilon` puts a layer outside it; with
+    # the particles' layer outside, a wall without one takes the particles' epsilon.
+    def wall_case(name, kernel, gap, eps_wall=None, vz=0.0, gamman=0.0, layer="inside"):
         zc = h + gap
         args = f"kernel {kernel}" + (f" epsilon {eps_wall!r}" if eps_wall else "")
         run_deck(ctx, "in.contact_wall", dict(MAT, zc=repr(zc), vz=vz, gamman=gamman,
-                                               wallargs=args))
+                                               wallargs=args, layer=layer))
         step, rows = last_frame(os.path.join(ctx.work, "contact.dump"))
         check(step == 0 and set(rows) == {1}, f"{name}: frame at step {step} with atoms "
                                               f"{sorted(rows)}")
         a = [float(x) for x in rows[1]]
         check(len(a) == 10, f"{name}: {len(a)} columns, expected 10")
         f, t = a[3:6], a[6:9]
-        overlap = EPS + (eps_wall or EPS) - gap
+        if layer == "inside":
+            overlap = (eps_wall or 0.0) - gap
+        else:
+            overlap = EPS + (eps_wall or EPS) - gap
         # n from the particle to the wall is -z; v_n = (v_wall - v) . n = vz; m_eff = m.
         fz = kn * overlap - gamman * mass * vz if overlap > 0 else 0.0
         scale = max(fz, 1e-300)
@@ -91,17 +99,21 @@ def test_contact_forces(ctx):
         check(all(abs(c) <= tol * h for c in t), f"{name}: torque {t} on a centred cube")
         print(f"{name}: f {f} (hand fz {fz!r}), torque {t}")
 
-    pair_case("pair_rest_bf", "bf", gap=1e-4)
-    pair_case("pair_rest_hybrid", "hybrid", gap=1e-4)
-    pair_case("pair_apart_bf", "bf", gap=2.5e-4)
-    pair_case("pair_approach_damped_bf", "bf", gap=1e-4, vxa=0.1, vxb=-0.1, gamman=gn)
-    pair_case("pair_offset_bf", "bf", gap=1e-4, yb=0.001)
-    pair_case("pair_sliding_bf", "bf", gap=1.2e-4, vzb=1.0, gamman=gn, gammat=gt)
-    pair_case("pair_sliding_coulomb_bf", "bf", gap=1e-4, yb=0.0005, vzb=20.0, gammat=gt)
-    wall_case("wall_eps_bf", "bf", gap=1e-4, eps_wall=5e-5)
-    wall_case("wall_default_eps_bf", "bf", gap=1e-4)
-    wall_case("wall_approach_hybrid", "hybrid", gap=1e-4, eps_wall=5e-5, vz=-0.1, gamman=gn)
-    wall_case("wall_apart_bf", "bf", gap=2e-4, eps_wall=5e-5)
+    pair_case("pair_rest_bf", "bf", gap=-1e-4)
+    pair_case("pair_rest_hybrid", "hybrid", gap=-1e-4)
+    pair_case("pair_touching_bf", "bf", gap=0.0)
+    pair_case("pair_apart_bf", "bf", gap=0.5e-4)
+    pair_case("pair_approach_damped_bf", "bf", gap=-1e-4, vxa=0.1, vxb=-0.1, gamman=gn)
+    pair_case("pair_offset_bf", "bf", gap=-1e-4, yb=0.001)
+    pair_case("pair_sliding_bf", "bf", gap=-0.8e-4, vzb=1.0, gamman=gn, gammat=gt)
+    pair_case("pair_sliding_coulomb_bf", "bf", gap=-1e-4, yb=0.0005, vzb=20.0, gammat=gt)
+    pair_case("pair_rest_layer_outside_bf", "bf", gap=1e-4, layer="outside")
+    pair_case("pair_apart_layer_outside_bf", "bf", gap=2.5e-4, layer="outside")
+    wall_case("wall_eps_bf", "bf", gap=0.0, eps_wall=5e-5)
+    wall_case("wall_default_eps_bf", "bf", gap=-1e-4)
+    wall_case("wall_approach_hybrid", "hybrid", gap=-0.5e-4, vz=-0.1, gamman=gn)
+    wall_case("wall_apart_bf", "bf", gap=1e-5)
+    wall_case("wall_layer_outside_bf", "bf", gap=1e-4, layer="outside")
 
 
 ADAPT_LINE = re.compile(r"tri/adapt_dt: step (\d+): dt (\S+) -> (\S+) \((.*)\)")

@@ -36,7 +36,8 @@ def _ball_mass():
 
 
 def _variables(pair, layers, gamman=0.0):
-    """Deck variables for a spring that would peak at `layers` combined layers."""
+    """Deck variables for a spring that would peak at `layers` x 2 eps (the combined layer of a
+    pair; a wall's mesh is its contact surface, so against a wall twice the particle's layer)."""
     meff = _ball_mass() / (2 if pair else 1)
     kn = meff * V0 ** 2 / (layers * LAYER) ** 2
     steps = int(1.5 * math.pi * math.sqrt(meff / kn) / DT) + 100
@@ -84,10 +85,11 @@ def test_deep_contact_limit(ctx):
     """Spring peak 16 x the layer, past the resolvable 0.25 x 2R = 12.5 layers: an ERROR naming
     the pair (or particle and wall mesh), the depth and what to change."""
     _meshes(ctx.work)
-    for pair, who in ((0, "particle 1 and wall mesh 'plane'"), (1, "particles 1 and 2")):
+    for pair, who, layer in ((0, "particle 1 and wall mesh 'plane'", r"5e-05"),
+                             (1, "particles 1 and 2", r"0\.0001")):
         want = (r"Fix tri/particles: step \d+: the real surfaces of " + re.escape(who) +
                 r" intersect (\S+) m deep past their soft layers \(overlap \S+ m = \S+ x the "
-                r"combined layer 0\.0001 m\), deeper than the contact model resolves, (\S+) m "
+                r"combined layer " + layer + r" m\), deeper than the contact model resolves, (\S+) m "
                 r"\(0\.25 of the thinner body's thinnest extent\): .*use a stiffer kn")
         line = expect_error(ctx, DECK, _variables(pair, 16), want)
         m = re.search(want, line)

@@ -100,13 +100,13 @@ def last_frame(path):
 # --------------------------------------------------------------------------------------------
 
 def test_materials_forces(ctx):
-    """One force evaluation (run 0, brute-force kernel, explicit epsilon 1e-4, gap 1e-4: overlap
-    1e-4 m) for hooke and hertz, pair and wall, against F = kn overlap - gamman meff v_n with
+    """One force evaluation (run 0, brute-force kernel, explicit epsilon 1e-4, the meshes pressed
+    1e-4 m into each other or into the wall: overlap 1e-4 m) for hooke and hertz, pair and wall, against F = kn overlap - gamman meff v_n with
     kn, gamman from the mapping computed here (hertz: within 1e-6, LIGGGHTS's damped hertz
     contact integrated here and in the kernel)."""
     make_meshes(ctx.work)
-    y, nu, e, eps, gap, v = 1e8, 0.3, 0.5, 1e-4, 1e-4, 0.1
-    overlap = 2 * eps - gap
+    y, nu, e, gap, v = 1e8, 0.3, 0.5, -1e-4, 0.1
+    overlap = -gap  # the meshes are the contact surfaces (the layer inside)
     tolerance = {"hooke": 1e-9, "hertz": 1e-6}  # hertz: two integrations of LIGGGHTS's contact
     for model in ("hooke", "hertz"):
         tol = tolerance[model]
@@ -198,8 +198,9 @@ def auto_line(out):
 
 def test_materials_epsilon_auto(ctx):
     """epsilon auto (and no epsilon at all) = the peak overlap v_c sqrt(meff / kn) of the
-    published pairs of types; the radius is the bounding radius plus it, set before the first
-    neighbour list; an explicit epsilon prints no such line."""
+    published pairs of types; the radius is the mesh's bounding radius (the layer inside it), or
+    with `layer outside` the bounding radius plus epsilon, set before the first neighbour list;
+    an explicit epsilon prints no such line."""
     make_meshes(ctx.work)
     y, nu = 1e8, 0.3
     kn_hooke = mapped("hooke", y, nu, 0.5, 1.0, wall=False)[0]
@@ -213,6 +214,8 @@ def test_materials_epsilon_auto(ctx):
         ("hooke/stiffness wall only", {"eps": "epsilon auto", "wall": 1,
                                        "modelargs": "model hooke/stiffness"},
          math.sqrt(MASS / 2000.0)),
+        ("hooke pair, epsilon auto, layer outside", {"eps": "epsilon auto", "tpargs": "layer outside"},
+         math.sqrt(MASS / 2 / kn_hooke)),
     ]
     for name, variables, expected in cases:
         _, out = run_deck(ctx, "in.materials", variables)
@@ -220,10 +223,11 @@ def test_materials_epsilon_auto(ctx):
         check(abs(printed - expected) <= 1e-5 * expected, f"{name}: printed {printed}, expected {expected}")
         rows = last_frame(os.path.join(ctx.work, "materials.dump"))
         check(rows, f"{name}: no atoms in the dump")
+        grown = expected if "outside" in name else 0.0
         for tag, r in rows.items():
             eps = r[9] - BOUNDING
-            check(abs(eps - expected) <= 1e-9 * expected, f"{name}: atom {tag} radius {r[9]!r} = "
-                  f"bounding radius + {eps!r}, expected + {expected!r}")
+            check(abs(eps - grown) <= 1e-9 * expected, f"{name}: atom {tag} radius {r[9]!r} = "
+                  f"bounding radius + {eps!r}, expected + {grown!r}")
         print(f"{name}: epsilon {printed:g} m (expected {expected:.6g})")
     check(abs(math.sqrt(MASS / 2 / kn_hooke) - hertz_overlap) <= 1e-12 * hertz_overlap,
           "hooke epsilon is not the Hertz peak overlap")
@@ -231,7 +235,12 @@ def test_materials_epsilon_auto(ctx):
     check("epsilon auto" not in out, "an explicit epsilon printed an 'epsilon auto' line")
     rows = last_frame(os.path.join(ctx.work, "materials.dump"))
     check(rows, "explicit epsilon: no atoms in the dump")
-    check(all(abs(r[9] - BOUNDING - 1e-4) <= 1e-15 for r in rows.values()), "explicit epsilon 1e-4 not applied")
+    check(all(abs(r[9] - BOUNDING) <= 1e-15 for r in rows.values()),
+          "explicit epsilon 1e-4: the radius is not the mesh's bounding radius")
+    run_deck(ctx, "in.materials", {"tpargs": "layer outside"})
+    rows = last_frame(os.path.join(ctx.work, "materials.dump"))
+    check(all(abs(r[9] - BOUNDING - 1e-4) <= 1e-15 for r in rows.values()),
+          "explicit epsilon 1e-4, layer outside: not applied to the radius")
     # The collision with epsilon auto is found by the neighbour list (cutoffs sized after it).
     before, after, _, _ = collide(ctx, {"eps": "epsilon auto", "xa": -(H + 2e-4), "xb": H + 2e-4,
                                         "vxa": 0.5, "vxb": -0.5, "dt": 1e-6}, 800)

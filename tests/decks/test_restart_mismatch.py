@@ -5,6 +5,7 @@ triangles or geometry, the order of the shapes, and a restart file without the s
 same deck must continue."""
 import os
 import re
+import struct
 
 from decklib import Failure, check, expect_error, run_deck
 
@@ -96,6 +97,10 @@ CASES = {
                 f"density 2500 epsilon 0.0001",
                 rf": shape 1 'rock20': 20 triangles, volume ({G}) m\^3 in the restart file; "
                 rf"'pebble': 20 triangles, volume \1 m\^3 in this deck$"),
+    "layer_outside_file": (ORIGINAL,
+                           r"the soft layer 'layer outside' in the restart file \(every file "
+                           r"before the layer moved inside\), 'layer inside' in this deck \(give "
+                           r"fix tri/particles 'layer outside' to continue it\)"),
     "old_file": (ORIGINAL,
                  r"Fix tri/particles: the restart file was written by an earlier liggghts-tri, "
                  r"whose restart files carry no shape record and cannot be read by this "
@@ -135,9 +140,21 @@ def test_restart_mismatch(ctx):
     # file of the earlier format (three doubles, no magic).
     with open(os.path.join(work, "mismatch.restart"), "rb") as f:
         data = f.read()
-    check(data.count(b"tri/rst2") == 1, "the restart file does not hold one shape record")
+    check(data.count(b"tri/rst3") == 1, "the restart file does not hold one shape record")
     with open(os.path.join(work, "old.restart"), "wb") as f:
-        f.write(data.replace(b"tri/rst2", b"\0" * 8))
+        f.write(data.replace(b"tri/rst3", b"\0" * 8))
+    # The record as written before the layer field (magic tri/rst2, no int64 after epsilon and
+    # density): every such file's layer lay outside the meshes.
+    at = data.index(b"tri/rst3")
+    size = struct.unpack("<i", data[at - 4:at])[0]
+    rst2 = (data[:at - 4] + struct.pack("<i", size - 8) + b"tri/rst2" + data[at + 8:at + 24] +
+            data[at + 32:])
+    with open(os.path.join(work, "outside.restart"), "wb") as f:
+        f.write(rst2)
+    _, out = run_deck(ctx, write_deck(work, "outside", READ.format(
+        restart="outside.restart", particles=ORIGINAL + " layer outside")), timeout=300)
+    check("ERROR" not in out, f"a tri/rst2 file read with 'layer outside': {out[-1500:]}")
+    print("tri/rst2 file, layer outside: continues")
 
     _, out = run_deck(ctx, write_deck(work, "same", READ.format(restart="mismatch.restart",
                                                                  particles=ORIGINAL)),
@@ -147,7 +164,8 @@ def test_restart_mismatch(ctx):
     check(CASES, "no cases")
     failures = []
     for name, (particles, pattern) in CASES.items():
-        restart = "old.restart" if name == "old_file" else "mismatch.restart"
+        restart = {"old_file": "old.restart", "layer_outside_file": "outside.restart"}.get(
+            name, "mismatch.restart")
         deck = write_deck(work, name, READ.format(restart=restart, particles=particles))
         try:
             line = expect_error(ctx, deck, {}, pattern)
