@@ -42,6 +42,7 @@ ContactRecord contact_record(const ContactPoint &c, const BodyState &a, const Bo
   rec.kind = c.intersecting ? ContactKind::deep : c.kind;
   rec.tri_a = c.tri_a;
   rec.tri_b = c.tri_b;
+  rec.velocity_b = b.v + b.omega.cross(c.point - b.x);
   add_virial(a.x - c.point, -f_b, rec.virial_a);
   add_virial(b.x - c.point, f_b, rec.virial_b);
   if (f_damper != 0.0) {
@@ -108,6 +109,7 @@ PairForceResult pair_contact_force(const std::vector<ContactPoint> &contacts, co
       break;
     }
     const Vector3d f_b = f_spring * c.normal + friction.force;
+    const Vector3d torque_a_before = records ? r.torque_a : Vector3d::Zero();
     r.force_a -= f_b;
     r.torque_a -= (c.point - a.x).cross(f_b);
     r.torque_b += (c.point - b.x).cross(f_b);
@@ -117,9 +119,6 @@ PairForceResult pair_contact_force(const std::vector<ContactPoint> &contacts, co
       r.torque_a -= (damping_point - a.x).cross(d_b);
       r.torque_b += (damping_point - b.x).cross(d_b);
     }
-    if (records)
-      records->push_back(
-          contact_record(c, a, b, f_b, f_damper, f_n, friction.force, damping_point));
     if (friction.twist_torque != 0.0) {
       const Vector3d couple_b = friction.twist_torque * c.normal;
       r.torque_a -= couple_b;
@@ -133,6 +132,11 @@ PairForceResult pair_contact_force(const std::vector<ContactPoint> &contacts, co
                                          b.omega - a.omega, f_n, m_eff);
       r.torque_a -= couple_b;
       r.torque_b += couple_b;
+    }
+    if (records) {
+      records->push_back(
+          contact_record(c, a, b, f_b, f_damper, f_n, friction.force, damping_point));
+      records->back().torque_a = r.torque_a - torque_a_before;
     }
     r.contacts_before += c.num_merged;
     r.max_overlap = std::max(r.max_overlap, c.overlap);

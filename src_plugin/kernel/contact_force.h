@@ -52,6 +52,8 @@ struct ContactRecord {
   double mean_radius = 0.0;  // m, the patch's mean distance from `point` (0 point-like)
   ContactKind kind = ContactKind::vertex;
   int tri_a = -1, tri_b = -1; // the deepest member's triangles (indices into a's and b's)
+  Eigen::Vector3d torque_a = Eigen::Vector3d::Zero(); // N m on a about its centre, couples too
+  Eigen::Vector3d velocity_b = Eigen::Vector3d::Zero(); // m/s, b's material at `point`
   // The contact's virial on each body (Virial above), from the points where its forces act:
   // spring and friction at `point`, a face's dashpot at its area centre.
   Virial virial_a{}, virial_b{};

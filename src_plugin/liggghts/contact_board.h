@@ -74,6 +74,7 @@ struct PublishedContact {
   int wall_mesh = -1;       // a wall: the mesh's position in its fix's `mesh` list (from 0)
   long wall_triangle = -1;  // a wall: the global id of the deepest member's wall triangle
   std::size_t body_pair = 0; // rows of one body pair (one task) share it, and are consecutive
+  bool first_of_pair = false; // the first row of its body pair
   tri::ContactRecord contact; // as seen from a: normal from a towards b, forces on b
 };
 

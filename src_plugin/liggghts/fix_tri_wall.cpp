@@ -324,11 +324,13 @@ void FixTriWall::publish_contacts() {
   for (std::size_t k = 0; k < ntasks_; ++k) {
     const Task &task = tasks_[k];
     TriMesh *mesh = meshes_[task.mesh]->triMesh();
+    bool first = true;
     for (const tri::ContactRecord &rec : engine_.records(k)) {
       const long triangle = rec.tri_b >= 0 && rec.tri_b < static_cast<int>(task.triangles.size())
                                 ? static_cast<long>(mesh->id(task.triangles[rec.tri_b]))
                                 : -1L;
-      contact_rows_.push_back({task.atom, -1, task.mesh, triangle, k, rec});
+      contact_rows_.push_back({task.atom, -1, task.mesh, triangle, k, first, rec});
+      first = false;
     }
   }
   board.publish_contacts(board_slot_, contact_rows_);

@@ -293,8 +293,11 @@ void PairTriGran::publish_contacts() {
   contact_rows_.clear();
   for (std::size_t k = 0; k < tasks_.size(); ++k) {
     const TaskView v = view(tasks_[k]);
-    for (const tri::ContactRecord &rec : engine_.records(k))
-      contact_rows_.push_back({v.a, v.b, -1, -1, k, rec});
+    bool first = true;
+    for (const tri::ContactRecord &rec : engine_.records(k)) {
+      contact_rows_.push_back({v.a, v.b, -1, -1, k, first, rec});
+      first = false;
+    }
   }
   board.publish_contacts(board_slot_, contact_rows_);
 }
