@@ -4,6 +4,8 @@
 
 #include "private_map_access.h"
 
+#include "compute_tri_contact_atom.h"
+#include "compute_tri_contact_local.h"
 #include "compute_tri_erotate.h"
 #include "compute_tri_stats.h"
 #include "fix_tri_adapt_dt.h"
@@ -40,6 +42,8 @@ struct ComputeRow {
 const ComputeRow compute_table[] = {
     {"tri/stats", &make_compute<LAMMPS_NS::ComputeTriStats>},
     {"tri/erotate", &make_compute<LAMMPS_NS::ComputeTriERotate>},
+    {"tri/contact/local", &make_compute<LAMMPS_NS::ComputeTriContactLocal>},
+    {"tri/contact/atom", &make_compute<LAMMPS_NS::ComputeTriContactAtom>},
 };
 
 template <typename T> LAMMPS_NS::Pair *make_pair(LAMMPS_NS::LAMMPS *lmp) { return new T(lmp); }

@@ -43,7 +43,7 @@ std::size_t InteractionScratch::bytes() const {
                      r.alive.capacity() + r.group.capacity() + r.tally.capacity();
   return distance.bytes() + triangle_contacts.capacity() * sizeof(TriangleContact) +
          points.capacity() * sizeof(ContactPoint) +
-         r.raw.capacity() * sizeof(ReductionWorkspace::Raw) +
+         records.capacity() * sizeof(ContactRecord) + r.raw.capacity() * sizeof(ReductionWorkspace::Raw) +
          r.keys.capacity() * sizeof(ReductionWorkspace::Key) +
          r.polygons.capacity() * sizeof(ContactPolygon) +
          r.points.capacity() * sizeof(Eigen::Vector3d) +
@@ -393,6 +393,7 @@ PairForceResult after_kernel(const Body &a, const Body &b, const InteractionSett
   params.min_width = std::min(a.min_edge, b.min_edge);
   params.reference_direction = reference_direction(a, b);
   params.distance_tolerance = certified_tolerance(s.distance, a.epsilon, b.epsilon);
+  params.classify = scratch.record_contacts;
   // Smooth surfaces against walls only, for now: between two smooth balls the peak measured
   // along each facet pair's bisector did not conserve energy (validation/contact/deep, pairs:
   // e 0.976 undamped), so particle pairs keep their facets.
@@ -408,8 +409,9 @@ PairForceResult after_kernel(const Body &a, const Body &b, const InteractionSett
   side_b.particle_centre = a.state.x;
   deepen_contacts(*a.triangles, side_a, *b.triangles, side_b, layer, params.reference_direction,
                   params.link_length, scratch.points, scratch.depth);
-  PairForceResult r =
-      pair_contact_force(scratch.points, a.state, b.state, s.coefficients, dt, history);
+  PairForceResult r = pair_contact_force(scratch.points, a.state, b.state, s.coefficients, dt,
+                                         history,
+                                         scratch.record_contacts ? &scratch.records : nullptr);
   r.layer = layer;
   r.depth_limit = deep_contact_limit(a.thinnest, b.thinnest);
   return r;

@@ -37,6 +37,11 @@ struct alignas(64) InteractionScratch {
   // the reduction reads the kernel's results in place (reduce_kernel_results).
   std::vector<TriangleContact> triangle_contacts;
   std::vector<ContactPoint> points;
+  // Where a host that asked (record_contacts) gets one ContactRecord per contact point of every
+  // body pair evaluated with this scratch, appended in evaluation order (the engine keeps each
+  // task's range: InteractionEngine::records); the reduction then also classifies the points.
+  bool record_contacts = false;
+  std::vector<ContactRecord> records;
   ReductionWorkspace reduction;
   DepthScratch depth;
   // Wall triangles proven apart from the particle by their own planes, and those planes.

@@ -16,9 +16,48 @@ TwistPatch twist_patch_of(const ContactPoint &c) {
   return t;
 }
 
+void add_virial(const Vector3d &branch, const Vector3d &force, Virial &v) {
+  v[0] += branch.x() * force.x();
+  v[1] += branch.y() * force.y();
+  v[2] += branch.z() * force.z();
+  v[3] += branch.x() * force.y();
+  v[4] += branch.x() * force.z();
+  v[5] += branch.y() * force.z();
+}
+
+namespace {
+
+// Contact c's record: its spring and friction f_b at c.point, its dashpot d_b at damping_point.
+ContactRecord contact_record(const ContactPoint &c, const BodyState &a, const BodyState &b,
+                             const Vector3d &f_b, double f_damper, double f_n,
+                             const Vector3d &friction, const Vector3d &damping_point) {
+  ContactRecord rec;
+  rec.point = c.point;
+  rec.normal = c.normal;
+  rec.normal_force = f_n;
+  rec.tangential_force = friction;
+  rec.overlap = c.overlap;
+  rec.area = c.patch_area;
+  rec.mean_radius = c.patch_mean_radius;
+  rec.kind = c.intersecting ? ContactKind::deep : c.kind;
+  rec.tri_a = c.tri_a;
+  rec.tri_b = c.tri_b;
+  rec.velocity_b = b.v + b.omega.cross(c.point - b.x);
+  add_virial(a.x - c.point, -f_b, rec.virial_a);
+  add_virial(b.x - c.point, f_b, rec.virial_b);
+  if (f_damper != 0.0) {
+    const Vector3d d_b = f_damper * c.normal;
+    add_virial(a.x - damping_point, -d_b, rec.virial_a);
+    add_virial(b.x - damping_point, d_b, rec.virial_b);
+  }
+  return rec;
+}
+
+} // namespace
+
 PairForceResult pair_contact_force(const std::vector<ContactPoint> &contacts, const BodyState &a,
                                    const BodyState &b, const ContactCoefficients &coeff, double dt,
-                                   double *history) {
+                                   double *history, std::vector<ContactRecord> *records) {
   PairForceResult r;
   const int n = static_cast<int>(contacts.size());
   const bool with_history = coeff.tangential == TangentialModel::history && history != nullptr;
@@ -70,6 +109,7 @@ PairForceResult pair_contact_force(const std::vector<ContactPoint> &contacts, co
       break;
     }
     const Vector3d f_b = f_spring * c.normal + friction.force;
+    const Vector3d torque_a_before = records ? r.torque_a : Vector3d::Zero();
     r.force_a -= f_b;
     r.torque_a -= (c.point - a.x).cross(f_b);
     r.torque_b += (c.point - b.x).cross(f_b);
@@ -92,6 +132,11 @@ PairForceResult pair_contact_force(const std::vector<ContactPoint> &contacts, co
                                          b.omega - a.omega, f_n, m_eff);
       r.torque_a -= couple_b;
       r.torque_b += couple_b;
+    }
+    if (records) {
+      records->push_back(
+          contact_record(c, a, b, f_b, f_damper, f_n, friction.force, damping_point));
+      records->back().torque_a = r.torque_a - torque_a_before;
     }
     r.contacts_before += c.num_merged;
     r.max_overlap = std::max(r.max_overlap, c.overlap);

@@ -27,10 +27,38 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <limits>
 #include <vector>
 
 namespace tri {
+
+// A virial, N m, in LIGGGHTS's order xx yy zz xy xz yz: sum over forces F acting on a body of
+// (x - p) (x) F, x the body's centre of mass and p where F acts. Summed over both bodies of a
+// contact it is (x_a - x_b) (x) F_a for forces along one line, LIGGGHTS's pair virial of
+// spheres, positive when the bodies are pressed together.
+using Virial = std::array<double, 6>;
+void add_virial(const Eigen::Vector3d &branch, const Eigen::Vector3d &force, Virial &v);
+
+// One contact point as the force law saw it, for output (stress, the contact network); filled
+// only where the caller asks (pair_contact_force's `records`).
+struct ContactRecord {
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();  // m, where the spring and friction act
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ(); // unit, from a towards b
+  double normal_force = 0.0; // N along `normal` on b (spring and dashpot; on a: the opposite)
+  Eigen::Vector3d tangential_force = Eigen::Vector3d::Zero(); // N on b (friction)
+  double overlap = 0.0;      // m (ContactPoint::overlap)
+  double area = 0.0;         // m^2, a face contact's patch; 0 point-like
+  double mean_radius = 0.0;  // m, the patch's mean distance from `point` (0 point-like)
+  ContactKind kind = ContactKind::vertex;
+  int tri_a = -1, tri_b = -1; // the deepest member's triangles (indices into a's and b's)
+  Eigen::Vector3d torque_a = Eigen::Vector3d::Zero(); // N m on a about its centre, couples too
+  Eigen::Vector3d velocity_b = Eigen::Vector3d::Zero(); // m/s, b's material at `point`
+  // The contact's virial on each body (Virial above), from the points where its forces act:
+  // spring and friction at `point`, a face's dashpot at its area centre.
+  Virial virial_a{}, virial_b{};
+  Eigen::Vector3d force_on_b() const { return normal_force * normal + tangential_force; }
+};
 
 struct PairForceResult {
   Eigen::Vector3d force_a = Eigen::Vector3d::Zero();  // N on a; the force on b is -force_a
@@ -62,8 +90,11 @@ struct PairForceResult {
 // inactive (zero) for a point-like contact.
 TwistPatch twist_patch_of(const ContactPoint &c);
 
+// `records`: null, or where one ContactRecord per contact point is appended (in `contacts`'
+// order); the forces do not depend on it.
 PairForceResult pair_contact_force(const std::vector<ContactPoint> &contacts, const BodyState &a,
                                    const BodyState &b, const ContactCoefficients &coeff, double dt,
-                                   double *history);
+                                   double *history,
+                                   std::vector<ContactRecord> *records = nullptr);
 
 } // namespace tri

@@ -480,6 +480,29 @@ SmoothFound smooth_surface_peak(const std::vector<Raw> &raw, const std::vector<i
   return best;
 }
 
+// Class c's ContactKind but deep (ContactKind, header): face from its face weight, else edge or
+// vertex from how far the members tied with the deepest lie from it.
+ContactKind class_kind(const ContactPoint &p, const std::vector<Raw> &raw,
+                       const std::vector<int> &members, const std::vector<int> &cls,
+                       const std::vector<int> &absorbed, int c, double layer) {
+  if (p.intersecting)
+    return ContactKind::deep;
+  if (p.face_weight >= 0.5)
+    return ContactKind::face;
+  const Raw *deepest = nullptr;
+  for (int i : members)
+    if (cls[i] == c && !absorbed[i] && (!deepest || raw[i].overlap > deepest->overlap))
+      deepest = &raw[i];
+  if (!deepest)
+    return ContactKind::vertex;
+  const double tied = deepest->overlap - kDeepestTaper * layer;
+  double spread2 = 0.0;
+  for (int i : members)
+    if (cls[i] == c && !absorbed[i] && raw[i].overlap >= tied)
+      spread2 = std::max(spread2, (raw[i].point - deepest->point).squaredNorm());
+  return spread2 > layer * layer ? ContactKind::edge : ContactKind::vertex;
+}
+
 ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &members,
                         const std::vector<int> &cls, const std::vector<int> &absorbed, int c,
                         int seed, double layer, const Vector3d &ref, const Faces &faces,
@@ -948,6 +971,8 @@ void reduce_clusters(std::vector<Raw> &raw, double layer, const ReductionParams 
         if (params.surface_lift > 0.0 && !(p.overlap > 0.0))
           continue;
         out.push_back(p);
+        if (params.classify)
+          out.back().kind = class_kind(p, raw, group, cls, absorbed, c, layer);
       }
     begin = end;
   }
@@ -970,6 +995,7 @@ ContactPoint single_point(const Raw &r) {
   p.intersecting = r.intersecting;
   p.tri_a = r.tri_a;
   p.tri_b = r.tri_b;
+  p.kind = r.intersecting ? ContactKind::deep : ContactKind::vertex;
   return p;
 }
 

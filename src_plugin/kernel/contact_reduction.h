@@ -308,6 +308,15 @@ constexpr double kFlatPatchBand = 0.1;
 // 2 mm icosphere); two flat faces meshed by any triangles by rounding only.
 constexpr double kFlatGradientSpread = 0.01;
 
+// What carries a contact, for output (compute tri/contact/local): a flat region on a flat region
+// (face: face_weight >= 0.5, step 6), else the closest points tied with the deepest one (within
+// kDeepestTaper of the layer, step 5): spread along a line longer than the layer (edge: an edge
+// lying along a face or along an edge) or at one place (vertex: a corner on a face, two edges
+// crossing, a ball on facets); deep where the real surfaces intersect (the soft layer overrun),
+// whatever the region. Set by the reduction only when ReductionParams::classify is; it changes
+// no force.
+enum class ContactKind : int { face = 1, edge = 2, vertex = 3, deep = 4 };
+
 struct ContactPoint {
   Eigen::Vector3d point = Eigen::Vector3d::Zero();   // m, world frame
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ(); // unit, from a towards b
@@ -328,6 +337,7 @@ struct ContactPoint {
   // The overlap whose 1/2 kn energy_overlap^2 is the contact's elastic energy (step 5b); equal
   // to `overlap` except for faces lying flat (there `overlap` is the force's, kn overlap).
   double energy_overlap = 0.0; // m
+  ContactKind kind = ContactKind::vertex; // with ReductionParams::classify (else vertex)
 };
 
 enum class ReductionMethod {
@@ -358,6 +368,9 @@ struct ReductionParams {
   // the layer still count where edge lifts are given (their smooth surfaces may overlap); a
   // contact point whose overlap comes out <= 0 is dropped.
   double surface_lift = 0.0;
+  // Set each point's kind (ContactKind above): one pass over the class's members, asked for
+  // only by a host that records its contacts.
+  bool classify = false;
 };
 
 // The link length that keeps every contact patch connected: 2 * min(longest edge of a,

@@ -13,6 +13,12 @@ void InteractionEngine::prepare(std::size_t n, int threads) {
   // Every task writes its slot (record_failure those that throw): no fill of all of them.
   results_.resize(n);
   recipients_.assign(n, Recipients{});
+  for (int t = 0; t < threads; ++t) {
+    scratch_[t].record_contacts = record_;
+    scratch_[t].records.clear();
+  }
+  if (record_)
+    record_ranges_.assign(n, RecordRange{});
   failed_task_ = n;
   failure_.clear();
 }
@@ -47,6 +53,8 @@ long InteractionEngine::take_group(int range, int thread) {
 
 void InteractionEngine::record_failure(std::size_t k, const char *what) {
   results_[k] = PairForceResult{}; // the task's own slot: no other thread writes it
+  if (record_)
+    record_ranges_[k] = RecordRange{};
 #pragma omp critical(tri_engine_failure)
   if (k < failed_task_) {
     failed_task_ = k;
@@ -112,13 +120,49 @@ void InteractionEngine::apply(double **f, double **torque) {
   }
 }
 
+InteractionEngine::Records InteractionEngine::records(std::size_t k) const {
+  if (!record_ || k >= record_ranges_.size())
+    return {};
+  const RecordRange &r = record_ranges_[k];
+  return {scratch_[r.thread].records.data() + r.begin, r.end - r.begin};
+}
+
+Virial InteractionEngine::side_virial(const Contribution &c) const {
+  Virial v{};
+  for (const ContactRecord &rec : records(c.task)) {
+    const Virial &w = c.side == 0 ? rec.virial_a : rec.virial_b;
+    for (int d = 0; d < 6; ++d)
+      v[d] += w[d];
+  }
+  return v;
+}
+
+void InteractionEngine::add_virial(double *global, double **vatom) const {
+  if (!record_)
+    return;
+  if (global)
+    for (const Contribution &c : contributions_) { // task order
+      const Virial v = side_virial(c);
+      for (int d = 0; d < 6; ++d)
+        global[d] += v[d];
+    }
+  if (vatom)
+    for (std::size_t i = 0; i < sorted_.size(); ++i) { // apply()'s order
+      const Contribution &c = contributions_[sorted_[i]];
+      const Virial v = side_virial(c);
+      for (int d = 0; d < 6; ++d)
+        vatom[c.atom][d] += v[d];
+    }
+}
+
 std::size_t InteractionEngine::bytes() const {
   std::size_t b = results_.capacity() * sizeof(PairForceResult) +
                   contributions_.capacity() * sizeof(Contribution) +
                   recipients_.capacity() * sizeof(Recipients) +
                   thread_stats_.capacity() * sizeof(ThreadStats) +
                   sorted_.capacity() * sizeof(std::uint32_t) +
-                  (first_of_atom_.capacity() + next_of_atom_.capacity()) * sizeof(std::size_t);
+                  (first_of_atom_.capacity() + next_of_atom_.capacity()) * sizeof(std::size_t) +
+                  record_ranges_.capacity() * sizeof(RecordRange);
   for (const InteractionScratch &s : scratch_)
     b += sizeof(s) + s.bytes();
   for (const std::vector<long> &d : deferred_)

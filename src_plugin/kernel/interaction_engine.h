@@ -95,6 +95,24 @@ public:
   }
   void apply(double **f, double **torque);
 
+  // Per-contact records (contact_force.h ContactRecord): set before run(), every task's contact
+  // points are recorded (InteractionScratch::record_contacts) and kept until the next run; off,
+  // nothing is recorded and records(k) is empty. What the virial and contact outputs read.
+  void record_contacts(bool on) { record_ = on; }
+  bool recording() const { return record_; }
+  struct Records {
+    const ContactRecord *first = nullptr;
+    std::size_t count = 0;
+    const ContactRecord *begin() const { return first; }
+    const ContactRecord *end() const { return first + count; }
+  };
+  Records records(std::size_t k) const;
+  // With records, after apply(): the tasks' virials (Virial: each side's records summed in their
+  // order) added to `global` (6 values) in task order, and to vatom (rows by atom) in apply()'s
+  // order, for the sides that apply() gave a recipient: so the sums do not depend on the thread
+  // count, and a contact that apply() gives a rank's atom counts there only.
+  void add_virial(double *global, double **vatom) const;
+
   std::size_t bytes() const; // heap memory held
 
 private:
@@ -117,6 +135,13 @@ private:
   std::vector<std::vector<long>> deferred_;  // per thread: the group's deferred tasks, by job
   std::vector<PairForceResult> results_;
   std::vector<Recipients> recipients_;       // per task
+  bool record_ = false;
+  struct RecordRange { // task k's records: scratch_[thread].records[begin, end)
+    int thread = 0;
+    std::uint32_t begin = 0, end = 0;
+  };
+  std::vector<RecordRange> record_ranges_; // per task, while recording
+  Virial side_virial(const Contribution &c) const;
   std::vector<Contribution> contributions_; // apply(): the named sides, in task order
   std::vector<std::uint32_t> sorted_; // apply(): contributions_' indices by (atom, partner)
   std::vector<std::size_t> first_of_atom_, next_of_atom_; // apply(): the counting sort
@@ -156,7 +181,11 @@ void InteractionEngine::run(std::size_t n, int threads, Prepare &&prepare_task,
     try {
       if (first)
         prepare_task(static_cast<std::size_t>(k), thread);
+      const std::size_t recorded = scratch_[thread].records.size();
       results_[k] = evaluate(static_cast<std::size_t>(k), scratch_[thread], thread_stats_[thread]);
+      if (record_) // a deferred first call records nothing; its resumed call overwrites this
+        record_ranges_[k] = {thread, static_cast<std::uint32_t>(recorded),
+                             static_cast<std::uint32_t>(scratch_[thread].records.size())};
     } catch (const std::exception &e) {
       record_failure(static_cast<std::size_t>(k), e.what());
     } catch (...) {

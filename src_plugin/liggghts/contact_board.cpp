@@ -10,7 +10,7 @@ int ContactBoard::join(const std::string &id, SourceKind kind) {
       sources_[k].kind = kind;
       return static_cast<int>(k);
     }
-  sources_.push_back({id, kind, {}, {}, {}, false, {}});
+  sources_.push_back({id, kind, {}, {}, {}, false, {}, {}});
   return static_cast<int>(sources_.size()) - 1;
 }
 
@@ -66,17 +66,41 @@ std::vector<ContactBoard::PublishedMaterial> ContactBoard::materials() const {
   return out;
 }
 
+void ContactBoard::publish_contacts(int slot, std::vector<PublishedContact> &rows) {
+  if (slot < 0 || slot >= static_cast<int>(sources_.size()))
+    throw std::out_of_range("ContactBoard::publish_contacts: no source in slot " +
+                            std::to_string(slot));
+  sources_[slot].contacts.swap(rows);
+}
+
+static bool of_kind(SourceKind kind, TallySource which) {
+  return which == TallySource::all ||
+         (which == TallySource::pair && kind == SourceKind::particle_pairs) ||
+         (which == TallySource::wall && kind == SourceKind::walls);
+}
+
+std::vector<const PublishedContact *> ContactBoard::contacts(TallySource which) const {
+  std::vector<const PublishedContact *> out;
+  for (const Source &s : sources_)
+    if (of_kind(s.kind, which))
+      for (const PublishedContact &c : s.contacts)
+        out.push_back(&c);
+  return out;
+}
+
 void ContactBoard::clear_tallies() {
   for (Source &s : sources_) {
     s.tally = tri::InteractionTally{};
     s.first = IntersectingPair{};
     s.deepest = DeepestContact{};
+    s.contacts.clear();
   }
   fastest_pair_ = FastestPair{};
 }
 
 void ContactBoard::clear_sources() {
   sources_.clear();
+  contacts_wanted_ = false;
   particle_pairs_ = nullptr;
   adaptive_dt_ = false;
 }
@@ -90,13 +114,9 @@ int ContactBoard::sources(SourceKind kind) const {
 
 tri::InteractionTally ContactBoard::local(TallySource which) const {
   tri::InteractionTally t;
-  for (const Source &s : sources_) {
-    const bool wanted = which == TallySource::all ||
-                        (which == TallySource::pair && s.kind == SourceKind::particle_pairs) ||
-                        (which == TallySource::wall && s.kind == SourceKind::walls);
-    if (wanted)
+  for (const Source &s : sources_)
+    if (of_kind(s.kind, which))
       t += s.tally;
-  }
   return t;
 }
 

@@ -16,6 +16,7 @@
 #pragma once
 
 #include "approach_speed.h"
+#include "contact_force.h"
 #include "interaction_tally.h"
 
 #include <string>
@@ -63,6 +64,20 @@ struct MaterialHint {
   double wall_epsilon = -1.0;
 };
 
+// One contact point of a source's last force evaluation, for the contact outputs (compute
+// tri/contact/local, tri/contact/atom). Every contact point of every task on this rank, ghost
+// partners included: the readers choose (a particle pair's row is output where its lower-tag
+// atom, atom_a, is owned; each owned atom counts its own contacts).
+struct PublishedContact {
+  int atom_a = -1;          // local index: the particle (a pair: the one with the lower tag)
+  int atom_b = -1;          // local index of the other particle; -1 for a wall
+  int wall_mesh = -1;       // a wall: the mesh's position in its fix's `mesh` list (from 0)
+  long wall_triangle = -1;  // a wall: the global id of the deepest member's wall triangle
+  std::size_t body_pair = 0; // rows of one body pair (one task) share it, and are consecutive
+  bool first_of_pair = false; // the first row of its body pair
+  tri::ContactRecord contact; // as seen from a: normal from a towards b, forces on b
+};
+
 class ContactBoard {
 public:
   // Returns the source's slot (the same slot for the same id).
@@ -82,6 +97,15 @@ public:
     dtmin_ = dtmin;
     dtmax_ = dtmax;
   }
+
+  // Contact outputs: a reader says so at its init (until the end of the run); the sources then
+  // record their contacts and publish them at every force evaluation, cleared with the tallies.
+  void want_contacts() { contacts_wanted_ = true; }
+  bool contacts_wanted() const { return contacts_wanted_; }
+  // The rows replace the source's (swapped: the caller gets the old vector back to refill).
+  void publish_contacts(int slot, std::vector<PublishedContact> &rows);
+  // Every source's rows of the given kinds, in slot order.
+  std::vector<const PublishedContact *> contacts(TallySource which) const;
 
   void clear_tallies();
   void clear_sources();
@@ -112,7 +136,9 @@ private:
     DeepestContact deepest;
     bool has_material = false;
     MaterialHint material;
+    std::vector<PublishedContact> contacts;
   };
+  bool contacts_wanted_ = false;
   std::vector<Source> sources_;
   const LAMMPS_NS::NeighList *particle_pairs_ = nullptr;
   FastestPair fastest_pair_;

@@ -28,6 +28,9 @@ const char *kStyle = "Fix tri/wall";
 
 FixTriWall::FixTriWall(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg) {
   settings_.interaction.coefficients.limit_force = true; // repulsive only, as pair tri/gran
+  // The wall's forces on the particles count in the pressure and stress/atom (LIGGGHTS 3.8 adds
+  // every fix's virial that sets this flag; keyword `virial no` leaves it out).
+  virial_flag = 1;
   int i = 3;
   while (i < narg) {
     const std::string key = arg[i];
@@ -50,6 +53,15 @@ FixTriWall::FixTriWall(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg) 
                                 arg[i + 1] + "'";
         error->all(FLERR, msg.c_str());
       }
+      i += 2;
+    } else if (key == "virial") {
+      const std::string value = i + 1 < narg ? arg[i + 1] : "";
+      if (value != "yes" && value != "no") {
+        const std::string msg =
+            std::string(kStyle) + ": 'virial' must be yes or no, got '" + value + "'";
+        error->all(FLERR, msg.c_str());
+      }
+      virial_flag = value == "yes";
       i += 2;
     } else if (!tri_liggghts::parse_contact_keyword(narg, arg, &i, settings_, kStyle, error)) {
       const std::string msg = std::string(kStyle) + ": unknown keyword '" + key + "'";
@@ -121,9 +133,9 @@ void FixTriWall::init() {
   neighbor->register_contact_dist_factor(1.0 + layer_ / rmin);
 }
 
-void FixTriWall::setup(int) { compute(false); }
+void FixTriWall::setup(int vflag) { compute(false, vflag); }
 
-void FixTriWall::post_force(int) { compute(true); }
+void FixTriWall::post_force(int vflag) { compute(true, vflag); }
 
 void FixTriWall::collect_tasks() {
   ntasks_ = 0;
@@ -252,8 +264,12 @@ void FixTriWall::prefetch(const Task &t) {
   __builtin_prefetch(axis(t.atom, t.mesh));
 }
 
-void FixTriWall::compute(bool update_history) {
+void FixTriWall::compute(bool update_history, int vflag) {
   const double start = MPI_Wtime();
+  if (vflag && virial_flag)
+    v_setup(vflag); // zeroes virial and vatom where asked
+  else
+    evflag = 0;
   collect_tasks();
   if (patches_.size() < ntasks_)
     patches_.resize(ntasks_);
@@ -262,6 +278,8 @@ void FixTriWall::compute(bool update_history) {
     node_scratch_.resize(nthreads);
   particles_->prepare_bodies();
   const double dt = update->dt;
+  tri_liggghts::ContactBoard &board = particles_->board();
+  engine_.record_contacts(evflag || board.contacts_wanted());
   engine_.run(ntasks_, nthreads,
               [&](std::size_t k, int thread) {
                 prepare(static_cast<int>(k), update_history, node_scratch_[thread]);
@@ -289,9 +307,32 @@ void FixTriWall::compute(bool update_history) {
     engine_.set_recipients(k, a, tasks_[k].mesh, -1, 0);
   }
   engine_.apply(atom->f, atom->torque);
+  if (evflag) // the particles' terms only: the wall is not an atom
+    engine_.add_virial(vflag_global ? virial : nullptr, vflag_atom ? vatom : nullptr);
+  publish_contacts();
   particles_->board().publish(board_slot_, engine_.tally(), first);
   particles_->board().publish_deepest(board_slot_, deepest);
   seconds_ += MPI_Wtime() - start;
+}
+
+void FixTriWall::publish_contacts() {
+  tri_liggghts::ContactBoard &board = particles_->board();
+  if (!board.contacts_wanted())
+    return;
+  contact_rows_.clear();
+  for (std::size_t k = 0; k < ntasks_; ++k) {
+    const Task &task = tasks_[k];
+    TriMesh *mesh = meshes_[task.mesh]->triMesh();
+    bool first = true;
+    for (const tri::ContactRecord &rec : engine_.records(k)) {
+      const long triangle = rec.tri_b >= 0 && rec.tri_b < static_cast<int>(task.triangles.size())
+                                ? static_cast<long>(mesh->id(task.triangles[rec.tri_b]))
+                                : -1L;
+      contact_rows_.push_back({task.atom, -1, task.mesh, triangle, k, first, rec});
+      first = false;
+    }
+  }
+  board.publish_contacts(board_slot_, contact_rows_);
 }
 
 /* ---------------- per-atom wall history ---------------- */

@@ -5,7 +5,8 @@
 // particle's triangles and those wall triangles meet in tri::body_interaction, the same
 // kernel, reduction and force law as pair tri/gran; the wall material is the mesh's type.
 //
-//   fix ID group tri/wall mesh MESH_ID [MESH_ID ...] [epsilon E] [model hooke/stiffness|hooke|hertz]
+//   fix ID group tri/wall mesh MESH_ID [MESH_ID ...] [epsilon E] [virial yes|no]
+//                         [model hooke/stiffness|hooke|hertz]
 //                         [contact keywords]
 //
 // A wall patch is a body of infinite mass moving as the mesh moves: its rigid velocity field is
@@ -14,6 +15,9 @@
 // loop, scratch, errors and ordered sums are tri::InteractionEngine's, as for pair tri/gran;
 // the tallies go to the contact board of fix tri/particles.
 //
+// virial yes|no (default yes): the wall's forces on the particles count in compute pressure and
+// stress/atom, each particle's (x - p) (x) F per contact (contact_force.h Virial), where
+// LIGGGHTS asks for the virial.
 // epsilon: the wall's soft layer (m), default the particles' epsilon. Contact keywords as
 // pair tri/gran (contact_settings.h). f_ID (a global scalar) is the wall-clock time spent in
 // this fix, for a run's time breakdown. The tangential history of each (particle, mesh) pair,
@@ -25,6 +29,7 @@
 #include "fix.h"
 
 #include "candidate_store.h"
+#include "contact_board.h"
 #include "contact_settings.h"
 #include "interaction_engine.h"
 #include "material_table.h"
@@ -93,7 +98,11 @@ private:
   int board_slot_ = -1;
   double seconds_ = 0.0;
 
-  void compute(bool update_history);
+  std::vector<tri_liggghts::PublishedContact> contact_rows_; // refilled when published
+  // One force evaluation; vflag as LIGGGHTS passes it (the virial where it asks).
+  void compute(bool update_history, int vflag);
+  // The step's contact records on the board, where a contact output wants them.
+  void publish_contacts();
   void collect_tasks();
   // A task's kept state (candidates, the atom's history and axis for this mesh) lies wherever
   // its entry and atom are: asked for kPrefetchAhead tasks ahead, as pair tri/gran does, it

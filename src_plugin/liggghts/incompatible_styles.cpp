@@ -109,15 +109,15 @@ const Row compute_table[] = {
     {"contact/atom",
      "it counts overlaps of bounding spheres, not contacts of the triangle "
      "surfaces",
-     "compute tri/stats (the step's contacts: all, pair or wall)"},
+     "compute tri/contact/atom (the bodies each particle touches)"},
     {"contact/atom/gran",
      "it counts overlaps of bounding spheres, not contacts of the triangle "
      "surfaces",
-     "compute tri/stats (the step's contacts: all, pair or wall)"},
+     "compute tri/contact/atom (the bodies each particle touches)"},
     {"pair/gran/local", "it lists the sphere contacts of pair gran",
-     "compute tri/stats (the step's contacts: all, pair or wall)"},
+     "compute tri/contact/local pair (one row per contact point, for dump local)"},
     {"wall/gran/local", "it lists the sphere contacts of fix wall/gran",
-     "compute tri/stats (the step's contacts: all, pair or wall)"},
+     "compute tri/contact/local wall (one row per contact point, for dump local)"},
 };
 
 const char *kPairReplacement =

@@ -21,6 +21,9 @@ const char *kStyle = "Pair tri/gran";
 
 PairTriGran::PairTriGran(LAMMPS *lmp) : PairGran(lmp) {
   settings_.interaction.coefficients.limit_force = true; // repulsive only, as in the paper
+  // The forces act at contact points, not along the line of centres: the virial is tallied per
+  // contact (branch vectors to the contact points), never from f . r.
+  no_virial_fdotr_compute = 1;
 }
 
 void PairTriGran::settings(int narg, char **arg) {
@@ -185,8 +188,13 @@ void PairTriGran::prefetch(const Task &t) {
 }
 
 void PairTriGran::compute_force(int eflag, int vflag, int) {
-  // Granular styles tally no pair energy or virial (as LIGGGHTS's own PairGran styles).
-  evflag = vflag_fdotr = 0;
+  // No pair energy is tallied (as LIGGGHTS's own granular styles); the virial, where LIGGGHTS
+  // asks for it (compute pressure, stress/atom), from each contact's record.
+  if (eflag || vflag)
+    ev_setup(eflag, vflag);
+  else
+    evflag = vflag_fdotr = 0;
+  const bool virial_wanted = vflag_global || vflag_atom;
   const int nlocal = atom->nlocal;
   const bool newton = force->newton_pair;
   const double dt = update->dt;
@@ -199,6 +207,8 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
   task_geometry_.resize(tasks_.size());
   const int nthreads = tri_liggghts::pair_loop_threads(settings_.loop, tasks_.size());
   particles_->prepare_bodies();
+  tri_liggghts::ContactBoard &board = particles_->board();
+  engine_.record_contacts(virial_wanted || board.contacts_wanted());
   engine_.run(tasks_.size(), nthreads,
               [&](std::size_t k, int) { prepare(tasks_[k], update_history); },
               [&](std::size_t k, tri::InteractionScratch &scratch, tri::ContactStats &stats) {
@@ -263,13 +273,33 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
   for (; passed < passed_.size(); ++passed)
     fastest.consider(passed_[passed].geometry, passed_[passed].tag_i, passed_[passed].tag_j);
   engine_.apply(atom->f, atom->torque); // the recipients set on the threads, above
+  // Each atom's own term, on the rank that owns it (its recipient side): a pair across ranks
+  // counts once in the sum over ranks, each of its atoms where it lives.
+  if (virial_wanted)
+    engine_.add_virial(vflag_global ? virial : nullptr, vflag_atom ? vatom : nullptr);
+  publish_contacts();
   tri::InteractionTally tally = engine_.tally();
   tally.add_passed(static_cast<long long>(passed_.size())); // as their apart_result would
-  tri_liggghts::ContactBoard &board = particles_->board();
   board.publish(board_slot_, tally, first);
   board.publish_deepest(board_slot_, deepest);
   board.publish_fastest_pair(fastest);
   board.publish_particle_pairs(list);
+}
+
+void PairTriGran::publish_contacts() {
+  tri_liggghts::ContactBoard &board = particles_->board();
+  if (!board.contacts_wanted())
+    return;
+  contact_rows_.clear();
+  for (std::size_t k = 0; k < tasks_.size(); ++k) {
+    const TaskView v = view(tasks_[k]);
+    bool first = true;
+    for (const tri::ContactRecord &rec : engine_.records(k)) {
+      contact_rows_.push_back({v.a, v.b, -1, -1, k, first, rec});
+      first = false;
+    }
+  }
+  board.publish_contacts(board_slot_, contact_rows_);
 }
 
 // Every rank that failed stops (error->one): the others may have no failing pair.

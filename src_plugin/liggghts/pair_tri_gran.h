@@ -34,12 +34,19 @@
 // the order of the partners' tags, not the neighbour list's, which follows the decomposition.
 // So a pair's force is bitwise the same on every rank that evaluates it, and so is each
 // atom's total.
+//
+// Virial (compute pressure, stress/atom), where LIGGGHTS asks for it: per contact point, each
+// particle's (x - p) (x) F over the forces F on it and the points p where they act (contact_force.h
+// Virial; for spheres the sum over both is LIGGGHTS's pair virial), tallied for the atoms this
+// rank owns (with newton off a pair across ranks counts each atom's term on its own rank: the
+// pair once over all ranks), summed in the engine's order: independent of the thread count.
 #pragma once
 
 #include "pair_gran.h"
 
 #include "approach_speed.h"
 #include "candidate_store.h"
+#include "contact_board.h"
 #include "contact_settings.h"
 #include "interaction_engine.h"
 #include "material_table.h"
@@ -110,7 +117,10 @@ private:
   std::vector<PassedPair> passed_;
   tri_liggghts::ParticleTravel travel_;
 
+  std::vector<tri_liggghts::PublishedContact> contact_rows_; // refilled when published
   void collect_tasks();
+  // The step's contact records on the board, where a contact output wants them.
+  void publish_contacts();
   void report_failure();
   double memory_usage() override;
 };

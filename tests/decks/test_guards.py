@@ -82,7 +82,7 @@ CASES = {
         r"compute erotate/sphere/atom \(ID rka\).*per atom the variable "
         r"0\.5\*\(f_shapes\[6\]\*omegax\+f_shapes\[7\]\*omegay\+f_shapes\[8\]\*omegaz\)"),
     "compute_contact_atom": (PAIR + WALL + NVE + "compute c all contact/atom\n",
-                             r"compute contact/atom \(ID c\).*use compute tri/stats"),
+                             r"compute contact/atom \(ID c\).*use compute tri/contact/atom"),
     "check_timestep_gran": (PAIR + WALL + NVE + "fix ts all check/timestep/gran 10 0.1 0.1\n",
                             r"fix check/timestep/gran \(ID ts\).*use the time-step check of fix tri/particles "
                             r"\(check_timestep setup\|N, on at every run by default\) and fix tri/adapt_dt"),
