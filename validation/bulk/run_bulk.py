@@ -104,10 +104,10 @@ def shape_file(shape, meshdir):
     return path
 
 
-def geometry(study, n, width_d):
+def geometry(study, n, width_d, reach=None):
     """Box width and height, insertion region, pour time: the same for every case of a study."""
     w = width_d * D
-    reach = REACH[study]
+    reach = reach or REACH[study]
     vol = math.pi / 6.0 * D ** 3
     bed = n * vol / (0.45 * w * w)                       # the loosest bed expected
     zlo = bed + 2 * reach + 0.003
@@ -330,6 +330,8 @@ def main():
     ap.add_argument("--liggghts", default="liggghts")
     ap.add_argument("--work", default="/tmp/bulk/work")
     ap.add_argument("--label", default="run")
+    ap.add_argument("--reach", type=float,
+                    help="size the insertion region for this reach (m) instead of the study's")
     ap.add_argument("--tap", type=int, default=0,
                     help="platonic study: shake the settled bed for this many floor cycles (tap.in)")
     ap.add_argument("--reuse", action="store_true", help="reuse final.dump files of earlier runs")
@@ -348,7 +350,7 @@ def main():
     print(f"liggghts-tri: {args.exe}\nliggghts: {args.liggghts}", flush=True)
     results = []
     for study in args.study:
-        geo = geometry(study, args.n, args.width_d)
+        geo = geometry(study, args.n, args.width_d, args.reach)
         print(f"study {study}: box {geo['W'] * 1e3:.0f} mm wide, insertion z {geo['zlo'] * 1e3:.0f}"
               f"-{geo['zhi'] * 1e3:.0f} mm, pour {geo['tpour']:.3f} s", flush=True)
         for case in cases(study, args.Y, args.sphere_seeds, args.tri_seeds):
