@@ -7,7 +7,8 @@ from decklib import check, expect_error, last_frame, make_contact_meshes, run_de
 
 G = 9.81
 CUBE_MASS = 2500 * 0.004 ** 3   # cube.stl (4 mm), density 2500
-FACE_AREA = 0.004 ** 2
+# The flat of the contact surface: the 4 mm face less the edges rounded with radius epsilon.
+FACE_AREA = (0.004 - 2 * 1e-4) ** 2
 FACE, DEEP = 1, 4               # tri::ContactKind
 
 
@@ -64,7 +65,8 @@ def test_network_stack(ctx):
     check_row(pair, "pair", -m_g)          # the top cube pushes the bottom one down
     check_row(wall, "wall", 2 * m_g)       # the plane carries both
     check(abs(pair[15]) < 2e-4, f"pair contact point z {pair[15]:g}, expected ~0 (the faces)")
-    check(abs(wall[15] + 0.0042) < 2e-4, f"wall contact point z {wall[15]:g}, expected ~-0.0042")
+    # Midway between the bottom cube's inner face (-4.005 mm + epsilon) and the plane (-4.015 mm).
+    check(abs(wall[15] + 0.00396) < 2e-5, f"wall contact point z {wall[15]:g}, expected ~-0.00396")
     print(f"pair: fn {pair[8]:.6e} N (m g {m_g:.6e}), area {pair[12]:.6e}; wall: fn "
           f"{wall[8]:.6e} N, area {wall[12]:.6e} m^2")
     counts = {tag: float(f[1]) for tag, f in atoms.items()}

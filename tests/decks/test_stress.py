@@ -15,7 +15,7 @@ from decklib import check, last_frame, make_contact_meshes, run, run_deck, therm
 
 G = 9.81
 CUBE_MASS = 2500 * 0.004 ** 3          # cube.stl, density 2500
-PLANE_Z, EPS = -0.00431, 1e-4          # in.twist_stack_physics: the plane, both soft layers
+PLANE_Z, EPS = -0.004015, 1e-4         # in.twist_stack_physics: the plane; the cubes' soft layer
 
 
 def final_row(out):
@@ -42,9 +42,10 @@ def test_stress_static_stack(ctx):
     vz = max(abs(float(f[1])) for f in atoms.values())
     check(vz < 1e-5, f"the stack is not at rest: |vz| up to {vz:g} m/s")
     bottom, top = z[1], z[2]
-    # The floor contact's point: midway between the bottom face and the plane (a face contact
-    # at rest carries its force at the centre of pressure, halfway across the gap).
-    z_floor = 0.5 * ((bottom - 0.002) + PLANE_Z)
+    # The floor contact's point: midway between the bottom cube's inner face (its mesh less the
+    # layer) and the plane (a face contact at rest carries its force at the centre of pressure,
+    # halfway across the gap the kernel measures).
+    z_floor = 0.5 * ((bottom - 0.002 + EPS) + PLANE_Z)
     weight = 2 * CUBE_MASS * G
     expected = -weight * (0.5 * (bottom + top) - z_floor)
     total, pair, wall = row["sums[3]"], row["sums[4]"], row["sums[5]"]
@@ -98,7 +99,7 @@ def test_stress_spheres_agree(ctx):
 
 def cluster_stress(ctx, phase, threads=1, ranks=1, pairargs="kernel hybrid"):
     _, out = run_deck(ctx, "in.stress_cluster",
-                      {"phase": phase, "px": ranks, "nsteps": 1500, "dump_every": 1500,
+                      {"phase": phase, "px": ranks, "nsteps": 2500, "dump_every": 2500,
                        "pairargs": pairargs},
                       ranks=ranks, env_extra={"OMP_NUM_THREADS": str(threads)})
     row = final_row(out)
