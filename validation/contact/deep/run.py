@@ -1,9 +1,15 @@
 #!/usr/bin/python3
 """Deep contacts: restitution of icosphere impacts whose linear spring reaches 2, 4 and 8 times
-the combined soft layer (the real surfaces intersect), against the linear spring-dashpot
+the contact's soft layers (the real surfaces intersect), against the linear spring-dashpot
 solution; past the resolvable depth, the run must stop with the deep-contact error.
 
   /usr/bin/python3 run.py [--exe build/src_plugin/driver/liggghts-tri] [--work /tmp/...]
+                          [--layer inside|outside]
+
+The contact's soft layers ("the layer" below): with the particle's layer inside its mesh (the
+default) the particle's eps against the wall (whose mesh has no layer) and 2 eps between two
+particles; with `--layer outside` (the earlier convention, the wall taking the particle's eps)
+2 eps for both.
 
 Both a particle-wall impact (fix tri/wall) and a particle-particle one (pair tri/gran), each
 undamped (e = 1: the force is the gradient of one potential) and damped for e = 0.73 (limitForce
@@ -32,11 +38,11 @@ restitution = importlib.util.module_from_spec(_spec)
 _spec.loader.exec_module(restitution)
 
 R, EPS, RHO, V0 = 0.0025, 5e-5, 2500.0, 1.0   # the issue's 5 mm ball at 1 m/s
-LAYER = 2 * EPS                                # combined soft layer (the wall's eps = the ball's)
+LAYER_OF = {0: EPS, 1: 2 * EPS}                # the contact's soft layers: wall, pair (--layer)
 LEVEL = 3                                      # 1280 triangles
 DT = 1e-6
 LAYERS = (2, 4, 8)                             # peak overlap of the undamped spring / layer
-PAST_LIMIT = 16                                # beyond 0.25 x 2R = 12.5 layers: the error
+PAST_LIMIT_M = 1.6e-3                          # m, a spring peak past 0.25 x 2R (+ the layer): the error
 E_DAMPED = 0.73
 TOL = 0.03
 LIMIT_FRACTION = 0.25                          # penetration_depth.h kDeepContactLimitFraction
@@ -82,7 +88,11 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--exe", default=valtools.default_exe())
     ap.add_argument("--work", default="/tmp/liggghts-tri-validation/deep")
+    ap.add_argument("--layer", default="inside", choices=("inside", "outside"),
+                    help="fix tri/particles layer (default inside: the mesh is the contact surface)")
     args = ap.parse_args()
+    if args.layer == "outside":
+        LAYER_OF[0] = 2 * EPS
     exe = os.path.abspath(args.exe)
     os.makedirs(args.work, exist_ok=True)
     verts, faces = meshgen.icosphere(LEVEL, R)
@@ -99,6 +109,7 @@ def main():
     results, traces = [], {}
     for pair in (0, 1):
         meff = mass if pair == 0 else mass / 2
+        LAYER = LAYER_OF[pair]
         for layers in LAYERS:
             kn = meff * V0 ** 2 / (layers * LAYER) ** 2
             tc0 = math.pi * math.sqrt(meff / kn)
@@ -107,14 +118,15 @@ def main():
                 gamman = 2 * zeta * math.sqrt(kn / meff)
                 name = "%s_%dx_e%.2f.txt" % ("pair" if pair else "wall", layers, e_t)
                 var = dict(pair=pair, R=R, eps=EPS, kn="%.10g" % kn, gamman="%.10g" % gamman,
-                           v0=V0, dt=DT, steps=int(1.6 * tc0 / DT) + 200, **stats)
+                           v0=V0, dt=DT, steps=int(1.6 * tc0 / DT) + 200, layer=args.layer,
+                           **stats)
                 rc, screen = run(exe, args.work, name, var)
                 if rc != 0:
                     sys.exit("%s failed (exit %d), see %s.screen" % (name, rc, name))
                 rows = valtools.read_rows(os.path.join(args.work, name))
                 m = measure(rows)
                 _, e_a = restitution.analytic(kn, meff, gamman, -m["v_in"], 0.0, "on")
-                r = dict(pair=pair, layers=layers, kn=kn, zeta=zeta, e_a=e_a, **m)
+                r = dict(pair=pair, layers=layers, kn=kn, zeta=zeta, e_a=e_a, layer=LAYER, **m)
                 r["err"] = r["e"] / e_a - 1
                 r["ok"] = abs(r["err"]) <= TOL
                 results.append(r)
@@ -124,34 +136,39 @@ def main():
     errors = []
     for pair in (0, 1):
         meff = mass if pair == 0 else mass / 2
-        kn = meff * V0 ** 2 / (PAST_LIMIT * LAYER) ** 2
+        kn = meff * V0 ** 2 / PAST_LIMIT_M ** 2
         tc0 = math.pi * math.sqrt(meff / kn)
-        name = "%s_%dx_limit.txt" % ("pair" if pair else "wall", PAST_LIMIT)
+        past = round(PAST_LIMIT_M / LAYER_OF[pair])
+        name = "%s_%dx_limit.txt" % ("pair" if pair else "wall", past)
         rc, screen = run(exe, args.work, name, dict(pair=pair, R=R, eps=EPS, kn="%.10g" % kn,
                                                     gamman=0, v0=V0, dt=DT,
-                                                    steps=int(1.6 * tc0 / DT), **stats))
+                                                    steps=int(1.6 * tc0 / DT), layer=args.layer,
+                                                    **stats))
         m = re.search(r"ERROR: (Fix tri/particles: step \d+: the real surfaces of .*?)"
                       r"(?: \(\S+:\d+\))?$", screen, re.M)
-        errors.append(dict(pair=pair, kn=kn, rc=rc, message=m.group(1) if m else None))
+        errors.append(dict(pair=pair, kn=kn, rc=rc, past=past,
+                           message=m.group(1) if m else None))
 
     limit = LIMIT_FRACTION * 2 * R
     print(valtools.machine_line())
-    print("icosphere level %d (%d triangles), R = %g m, mass = %.6g kg, eps = %g m (combined "
-          "layer %g m), v0 = %g m/s, dt = %g s; resolvable depth past the layer %g m = %.1f layers"
-          % (LEVEL, len(faces), R, mass, EPS, LAYER, V0, DT, limit, limit / LAYER))
+    print("icosphere level %d (%d triangles), R = %g m, mass = %.6g kg, eps = %g m (layer %s; the "
+          "contact's layers: wall %g m, pair %g m), v0 = %g m/s, dt = %g s; resolvable depth past "
+          "the layer %g m = %.1f wall layers, %.1f pair layers"
+          % (LEVEL, len(faces), R, mass, EPS, args.layer, LAYER_OF[0], LAYER_OF[1], V0, DT,
+             limit, limit / LAYER_OF[0], limit / LAYER_OF[1]))
     print("| contact | spring peak / layer | kn (N/m) | zeta | e analytic | e measured | error | "
           "peak overlap / layer | steps with deep contact | depth / limit | pass (3%) |")
     print("|---|---|---|---|---|---|---|---|---|---|---|")
     for r in results:
         print("| %s | %d | %.5g | %.4f | %.4f | %.4f | %+.2f%% | %.2f | %d | %.2f | %s |" % (
             "pair" if r["pair"] else "wall", r["layers"], r["kn"], r["zeta"], r["e_a"], r["e"],
-            100 * r["err"], r["peak"] / LAYER, r["deep_steps"], r["ratio"],
+            100 * r["err"], r["peak"] / r["layer"], r["deep_steps"], r["ratio"],
             "PASS" if r["ok"] else "FAIL"))
     print("worst |error|: %.3f%%; %d/%d pass" % (100 * max(abs(r["err"]) for r in results),
                                                  sum(r["ok"] for r in results), len(results)))
     for e in errors:
         print("%s, spring peak %d layers (kn %.4g N/m): exit %d: %s" % (
-            "pair" if e["pair"] else "wall", PAST_LIMIT, e["kn"], e["rc"], e["message"]))
+            "pair" if e["pair"] else "wall", e["past"], e["kn"], e["rc"], e["message"]))
 
     import matplotlib
     matplotlib.use("Agg")
@@ -163,18 +180,17 @@ def main():
             continue
         kn = next(r["kn"] for r in results if r["pair"] == pair and r["layers"] == layers)
         sel = [r for r in rows if abs(r[2]) > 0]
+        LAYER = LAYER_OF[pair]
         a.plot([r[3] / LAYER for r in sel], [abs(r[2]) / (kn * LAYER) for r in sel],
                "-" if pair == 0 else "--", lw=1.5,
                label="%s, spring peak %d layers" % ("wall" if pair == 0 else "pair", layers))
-    xs = [0, PAST_LIMIT]
+    xs = [0, max(LAYERS) * 1.1]
     a.plot(xs, xs, "k:", lw=1, label="linear spring F = kn overlap")
     a.axvline(1.0, color="grey", lw=0.8)
-    a.axvline(1.0 + limit / LAYER, color="C3", lw=0.8)
     a.text(1.1, 0.5, "real surfaces\nintersect", fontsize=8)
-    a.text(1.0 + limit / LAYER - 0.2, 0.5, "resolvable\ndepth", fontsize=8, ha="right",
-           color="C3")
-    a.set_xlabel("overlap / combined soft layer 2 eps")
-    a.set_ylabel("normal force / (kn 2 eps)")
+    a.set_xlabel("overlap / the contact's soft layers (wall: %s, pair: 2 eps)"
+                 % ("eps" if LAYER_OF[0] == EPS else "2 eps"))
+    a.set_ylabel("normal force / (kn x the layers)")
     a.set_title("undamped impacts: force through the intersection")
     a.legend(fontsize=7)
     a.grid(alpha=0.3)
@@ -182,23 +198,23 @@ def main():
     for pair, mk in ((0, "o"), (1, "s")):
         for e_t, colour in ((1.0, "C0"), (E_DAMPED, "C1")):
             sel = [r for r in results if r["pair"] == pair and abs(r["e_a"] - e_t) < 0.05]
+            LAYER = LAYER_OF[pair]
             a.plot([r["peak"] / LAYER for r in sel], [r["e"] for r in sel], mk, color=colour,
                    mfc="none" if pair else colour,
                    label="%s, analytic e = %.3f" % ("pair" if pair else "wall", sel[0]["e_a"]))
             for r in sel:
                 a.plot([r["peak"] / LAYER] * 2, [r["e_a"] * (1 - TOL), r["e_a"] * (1 + TOL)],
                        "-", color=colour, lw=0.6)
-    a.axvline(1.0 + limit / LAYER, color="C3", lw=0.8)
-    a.set_xlabel("measured peak overlap / combined soft layer")
+    a.set_xlabel("measured peak overlap / the contact's soft layers")
     a.set_ylabel("coefficient of restitution")
-    a.set_title("restitution (bars: analytic +- 3 %%); past %.1f layers: ERROR" %
-                (1.0 + limit / LAYER))
+    a.set_title("restitution (bars: analytic +- 3 %%); ERROR past %.1f wall, %.1f pair layers" %
+                (1.0 + limit / LAYER_OF[0], 1.0 + limit / LAYER_OF[1]))
     a.legend(fontsize=7)
     a.grid(alpha=0.3)
-    fig.suptitle("Deep contacts: icosphere (%d triangles, R = %g mm) at %g m/s, eps = %g mm"
-                 % (len(faces), 1e3 * R, V0, 1e3 * EPS))
+    fig.suptitle("Deep contacts: icosphere (%d triangles, R = %g mm) at %g m/s, eps = %g mm, "
+                 "layer %s" % (len(faces), 1e3 * R, V0, 1e3 * EPS, args.layer))
     fig.tight_layout()
-    out = os.path.join(HERE, "deep.png")
+    out = os.path.join(HERE, "deep.png" if args.layer == "inside" else "deep_outside.png")
     fig.savefig(out, dpi=110)
     print("plot:", out)
     ok = all(r["ok"] for r in results) and all(e["rc"] != 0 and e["message"] for e in errors)
