@@ -4,6 +4,11 @@
 wall/gran, model hooke/stiffness), against the linear spring-dashpot solution.
 
   /usr/bin/python3 run.py [--exe build/src_plugin/driver/liggghts-tri] [--work /tmp/...]
+                         [--layer inside|outside]
+
+The sphere twin has the radius at which the icosphere's contact starts: the mesh's own R with
+the soft layer inside the mesh (the default); R + 2 eps against the wall and R + eps in the
+pair with `--layer outside` (the layer outside the mesh, the wall taking the particle's eps).
 
 Runs every deck (in.tri, in.sphere) into the scratch folder, prints the table, writes
 restitution.png next to this script. Needs Debian's matplotlib (/usr/bin/python3).
@@ -100,6 +105,8 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--exe", default=valtools.default_exe())
     ap.add_argument("--work", default="/tmp/liggghts-tri-validation/restitution")
+    ap.add_argument("--layer", default="inside", choices=("inside", "outside"),
+                    help="fix tri/particles layer (default inside: the mesh is the contact surface)")
     args = ap.parse_args()
     exe = os.path.abspath(args.exe)
     os.makedirs(args.work, exist_ok=True)
@@ -123,7 +130,8 @@ def main():
             gamman = 2 * zeta * math.sqrt(KN / meff)
             for limit in ("off", "on"):
                 common = {"pair": pair, "R": R, "eps": EPS, "kn": KN, "gamman": "%.10g" % gamman,
-                          "limit": limit, "v0": V0, "dt": DT, "steps": STEPS}
+                          "limit": limit, "v0": V0, "dt": DT, "steps": STEPS,
+                          "layer": args.layer}
                 for engine in ("tri", "sphere"):
                     var = dict(common)
                     if engine == "tri":
@@ -146,8 +154,9 @@ def main():
                     traces[(engine, pair, e_t, limit)] = rows
 
     print(valtools.machine_line())
-    print("icosphere level %d (%d triangles), R = %g m, mass = %.6g kg, eps = %g m, kn = %g N/m, "
-          "v0 = %g m/s, dt = %g s" % (LEVEL, len(faces), R, mass, EPS, KN, V0, DT))
+    print("icosphere level %d (%d triangles), R = %g m, mass = %.6g kg, eps = %g m (layer %s), "
+          "kn = %g N/m, v0 = %g m/s, dt = %g s" % (LEVEL, len(faces), R, mass, EPS, args.layer,
+                                                  KN, V0, DT))
     print("| case | engine | limitForce | zeta | gamman (1/s) | e textbook | e analytic | e measured"
           " | error e | t_c textbook (us) | t_c analytic (us) | t_c measured (us) | error t_c |"
           " pass (2%) |")
@@ -214,7 +223,8 @@ def main():
     fig.suptitle("Normal restitution: icosphere (%d triangles) vs LIGGGHTS sphere vs linear "
                  "spring-dashpot" % len(faces))
     fig.tight_layout()
-    out = os.path.join(HERE, "restitution.png")
+    out = os.path.join(HERE, "restitution.png" if args.layer == "inside"
+                       else "restitution_outside.png")
     fig.savefig(out, dpi=110)
     print("plot:", out)
     return 0 if all(r["ok"] for r in results) else 1
