@@ -5,6 +5,12 @@ icosphere's volume-equivalent radius and mass: restitution and contact duration 
 speed, head-on pairs and a plane.
 
   /usr/bin/python3 run.py [--exe build/src_plugin/driver/liggghts-tri] [--work /tmp/...]
+                         [--layer inside|outside]
+
+epsilon auto is the peak overlap of an undamped contact at the characteristic velocity, and
+fills the contact's soft layers at half: 2 eps = 2 x that overlap for a pair; against a wall
+(whose mesh has no layer of its own) the particle's layer alone, eps = that overlap, with the
+layer inside the mesh (the default), and 2 eps with `--layer outside` (the wall's layer).
 
 Runs in.tri and in.sphere into the scratch folder, prints the README table, writes
 materials.png next to this script. Needs Debian's matplotlib (/usr/bin/python3).
@@ -24,7 +30,8 @@ import valtools  # noqa: E402
 
 R, RHO, LEVEL = 0.002, 2500.0, 3
 Y, NU, E, VC = 1e8, 0.3, 0.5, 1.0
-SPEEDS = (0.25, 0.5, 1.0, 1.5)   # x VC; above 2 VC the peak overlap exceeds epsilon auto's layers
+SPEEDS = (0.25, 0.5, 1.0, 1.5)   # x VC; above 2 VC (a wall, layer inside: 1 VC) the peak overlap
+                                 # exceeds epsilon auto's layers (a deep contact)
 DT, STEPS = 2e-7, 4000
 HERTZ_I = math.gamma(0.4) * math.sqrt(math.pi) / (2.5 * math.gamma(0.9))
 
@@ -107,6 +114,8 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--exe", default=valtools.default_exe())
     ap.add_argument("--work", default="/tmp/liggghts-tri-validation/materials")
+    ap.add_argument("--layer", default="inside", choices=("inside", "outside"),
+                    help="fix tri/particles layer (default inside: the mesh is the contact surface)")
     args = ap.parse_args()
     exe = os.path.abspath(args.exe)
     os.makedirs(args.work, exist_ok=True)
@@ -136,7 +145,8 @@ def main():
                                steps=STEPS, plane="plane.stl")
                     key = engine if engine == "sphere" else "tri_" + limit
                     if engine == "tri":  # eps only places the icosphere: at least epsilon auto
-                        var.update(mesh="ico3.stl", R=R, eps=1e-4, limit=limit)
+                        var.update(mesh="ico3.stl", R=R, eps=1e-4, limit=limit,
+                                   layer=args.layer)
                     else:
                         var.update(r="%.17g" % r_eq, mass="%.17g" % mass)
                     name = "%s_%s_%s_v%.2f.txt" % (key, model, "pair" if pair else "wall", v0)
@@ -156,7 +166,9 @@ def main():
                         with open(os.path.join(args.work, name + ".screen")) as f:
                             printed = float(re.search(r"epsilon auto = (\S+) m", f.read()).group(1))
                         assert abs(printed / eps_auto - 1) < 1e-5, (name, printed, eps_auto)
-                        row["ov_" + key] = ov / (2 * eps_auto)
+                        # the contact's layers: 2 eps (pair; wall, layer outside), eps (wall)
+                        layers = eps_auto if (not pair and args.layer == "inside") else 2 * eps_auto
+                        row["ov_" + key] = ov / layers
                 if model == "hooke":   # LIGGGHTS hooke: same kn, its own zeta, limitForce off
                     zl = zeta_liggghts(E)
                     kl = tri_kn("hooke", reff, meff)
@@ -172,7 +184,8 @@ def main():
     print()
     print("| model | contact | v / v_c | kn tri (N/m) | e tri | e tri, limitForce off | e LIGGGHTS "
           "sphere | t_c tri (us) | t_c tri, limitForce off (us) | t_c LIGGGHTS sphere (us) | "
-          "t_c sphere reference (us) | peak overlap tri / 2 eps |")
+          "t_c sphere reference (us) | peak overlap tri / layers (%s) |"
+          % ("pair 2 eps, wall eps" if args.layer == "inside" else "2 eps"))
     print("|---|---|---|---|---|---|---|---|---|---|---|---|")
     for r in results:
         print("| %s | %s | %.2f | %.0f | %.4f | %.4f | %.4f | %.1f (%.1f) | %.1f (%.1f) | %.1f | "
@@ -221,7 +234,7 @@ def main():
                  "coefficientRestitution %g, characteristicVelocity %g m/s"
                  % (len(faces), Y, NU, E, VC), fontsize=10)
     fig.tight_layout()
-    out = os.path.join(HERE, "materials.png")
+    out = os.path.join(HERE, "materials.png" if args.layer == "inside" else "materials_outside.png")
     fig.savefig(out, dpi=110)
     print("plot:", out)
     return 0
