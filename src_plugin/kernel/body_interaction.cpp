@@ -12,6 +12,22 @@ namespace tri {
 
 namespace {
 
+// The reduction's points lie midway between the two surfaces the kernel measures; each body's
+// contact surface lies its layer beyond its own, so midway through the overlap of the contact
+// surfaces is (eps_a - eps_b) / 2 further along the normal: no shift for two particles of one
+// layer, half the particle's layer towards a wall that has none (the lever of rolling and
+// friction is then the particle's own radius, and a resting body's wall contact sits on the
+// wall's mesh).
+void place_between_given_surfaces(double eps_a, double eps_b, std::vector<ContactPoint> &points) {
+  const double shift = 0.5 * (eps_a - eps_b);
+  if (shift == 0.0)
+    return;
+  for (ContactPoint &p : points) {
+    p.point += shift * p.normal;
+    p.damping_point += shift * p.normal;
+  }
+}
+
 // Where no normal is defined (coincident triangles), push along the line of centres, or for a
 // wall along the direction from the particle's centre to the wall's closest point.
 // O(patch triangles), small beside the triangle pairs of the same interaction.
@@ -409,6 +425,7 @@ PairForceResult after_kernel(const Body &a, const Body &b, const InteractionSett
   side_b.particle_centre = a.state.x;
   deepen_contacts(*a.triangles, side_a, *b.triangles, side_b, layer, params.reference_direction,
                   params.link_length, scratch.points, scratch.depth);
+  place_between_given_surfaces(a.epsilon, b.epsilon, scratch.points);
   PairForceResult r = pair_contact_force(scratch.points, a.state, b.state, s.coefficients, dt,
                                          history,
                                          scratch.record_contacts ? &scratch.records : nullptr);

@@ -6,8 +6,8 @@ of mass fractions 0.3 / 0.7, and two shapes of different mass (a 4 mm rock of 20
 The templates' radius (1 mm) is half the shapes' reach: LIGGGHTS would pack such spheres far
 too densely for the real particles, and weigh them all the same. Checked:
   * one info line per template at the first insertion, naming its shape, reach and mass;
-  * every atom has a shape, and its radius and mass are that shape's (bounding radius + epsilon,
-    density x volume), never the template's;
+  * every atom has a shape, and its radius and mass are that shape's (its reach, the mesh's bounding
+    radius; density x volume), never the template's;
   * the shapes' mass fractions are 0.3 / 0.7 within 3 standard deviations of a binomial draw of
     that many particles (with the templates' sphere masses they would be 0.50 / 0.50);
   * no two particles and no particle and the floor start intersecting: compute tri/stats
@@ -134,7 +134,7 @@ def insertion(ctx, mode, ranks=1):
     # The info lines: template -> shape, its reach and mass.
     info = {}
     for t, s, r, mass in re.findall(r"tri/particles: template (\S+) \(radius \S+ m, mass \S+ kg\) "
-                                    r"-> shape (\S+) \(bounding radius\+eps (\S+) m, mass (\S+) kg\)",
+                                    r"-> shape (\S+) \(reach (\S+) m, mass (\S+) kg\)",
                                     out):
         info[t] = (s, float(r), float(mass))
     for line in out.splitlines():

@@ -65,8 +65,9 @@ def test_network_stack(ctx):
     check_row(pair, "pair", -m_g)          # the top cube pushes the bottom one down
     check_row(wall, "wall", 2 * m_g)       # the plane carries both
     check(abs(pair[15]) < 2e-4, f"pair contact point z {pair[15]:g}, expected ~0 (the faces)")
-    # Midway between the bottom cube's inner face (-4.005 mm + epsilon) and the plane (-4.015 mm).
-    check(abs(wall[15] + 0.00396) < 2e-5, f"wall contact point z {wall[15]:g}, expected ~-0.00396")
+    # Midway through the overlap of the bottom face and the plane (z = -4.015 mm; the overlap
+    # under two cubes' weight is about 1.6 um).
+    check(abs(wall[15] + 0.004015) < 2e-6, f"wall contact point z {wall[15]:g}, expected ~-0.004015")
     print(f"pair: fn {pair[8]:.6e} N (m g {m_g:.6e}), area {pair[12]:.6e}; wall: fn "
           f"{wall[8]:.6e} N, area {wall[12]:.6e} m^2")
     counts = {tag: float(f[1]) for tag, f in atoms.items()}

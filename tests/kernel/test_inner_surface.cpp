@@ -124,20 +124,9 @@ TEST(InnerSurface, RandomRocksKeepEveryVertexTheLayerInside) {
 }
 
 TEST(InnerSurface, ANonConvexCornerMovesIntoTheSolidAlongBothFaces) {
-  // L prism: outline (0,0) (2,0) (2,1) (1,1) (1,2) (0,2), height 1; vertex 3 is the concave
-  // corner (1,1,0), whose faces have outward normals +y (from (2,1)) and +x (to (1,2)).
-  const double outline[6][2] = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
-  tri::TriangleMesh m;
-  for (double z : {0.0, 1.0})
-    for (const auto &p : outline)
-      m.vertices.emplace_back(p[0], p[1], z);
-  for (int i = 0; i < 6; ++i) {
-    const int j = (i + 1) % 6;
-    m.triangles.push_back({i, j, j + 6});
-    m.triangles.push_back({i, j + 6, i + 6});
-  }
-  m.triangles.insert(m.triangles.end(), {{6, 7, 8}, {6, 8, 9}, {6, 9, 10}, {6, 10, 11}});
-  m.triangles.insert(m.triangles.end(), {{0, 2, 1}, {0, 3, 2}, {0, 4, 3}, {0, 5, 4}});
+  // tri_test::l_prism: vertex 3 is the concave corner (1,1,0), whose faces have outward
+  // normals +y (from (2,1)) and +x (to (1,2)).
+  const tri::TriangleMesh m = tri_test::l_prism(1.0);
   const double layer = 0.1;
   const tri::TriangleMesh inner = tri::inner_surface(m, layer);
   EXPECT_NEAR((inner.vertices[3] - Vector3d(0.9, 0.9, 0.1)).norm(), 0.0, 1e-14);

@@ -44,6 +44,28 @@ inline tri::TriangleMesh transformed(tri::TriangleMesh m, const Eigen::Matrix3d 
   return m;
 }
 
+// An L-shaped prism (non-convex), extruded along z from the outline
+// (0,0) (2,0) (2,1) (1,1) (1,2) (0,2), height h. The caps are fans from corner (0,0), which
+// sees the whole L.
+inline tri::TriangleMesh l_prism(double h) {
+  const double outline[6][2] = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
+  tri::TriangleMesh m;
+  for (double z : {0.0, h})
+    for (const auto &p : outline)
+      m.vertices.emplace_back(p[0], p[1], z);
+  // Sides: outline counter-clockwise seen from +z, so (i, i+1, top i+1) faces outward.
+  for (int i = 0; i < 6; ++i) {
+    const int j = (i + 1) % 6;
+    m.triangles.push_back({i, j, j + 6});
+    m.triangles.push_back({i, j + 6, i + 6});
+  }
+  // Top (+z, counter-clockwise).
+  m.triangles.insert(m.triangles.end(), {{6, 7, 8}, {6, 8, 9}, {6, 9, 10}, {6, 10, 11}});
+  // Bottom (-z): the same, reversed.
+  m.triangles.insert(m.triangles.end(), {{0, 2, 1}, {0, 3, 2}, {0, 4, 3}, {0, 5, 4}});
+  return m;
+}
+
 // Splits every triangle of `m` (vertices on the unit sphere) into 4, `levels` times, pushing
 // each new edge midpoint onto the unit sphere. Triangle count grows by 4^levels; an edge
 // shared by two triangles gets one midpoint vertex.
