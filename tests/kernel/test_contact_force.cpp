@@ -909,3 +909,60 @@ TEST(PairContactForce, RestingCubeHasNoTorqueAboutItsCentreOfMass) {
 }
 
 } // namespace
+
+// ---- records for output: the virial ----
+
+namespace {
+
+// The records' virial of both bodies summed over a pair's contacts.
+tri::Virial pair_virial(const std::vector<tri::ContactRecord> &records) {
+  tri::Virial v{};
+  for (const tri::ContactRecord &r : records)
+    for (int k = 0; k < 6; ++k)
+      v[k] += r.virial_a[k] + r.virial_b[k];
+  return v;
+}
+
+} // namespace
+
+TEST(ContactRecords, PairVirialIsTheBranchBetweenCentresTimesTheForce) {
+  // Two off-centre contacts with friction and damping: whatever the points, forces along and
+  // across the normal sum to (x_a - x_b) (x) F_a over both bodies (LIGGGHTS's pair virial).
+  ContactCoefficients c = material();
+  const BodyState a = body({0.001, -0.002, 0.0005}, {0.1, 0.02, -0.05}, {3, -1, 2}, 1e-4);
+  const BodyState b = body({0.004, 0.001, 0.0015}, {-0.1, 0.0, 0.03}, {-2, 4, 1}, 2e-4);
+  const ContactPoint p = point({0.0025, -0.0005, 0.001}, {1, 1, 0.3}, 6e-5);
+  ContactPoint q = point({0.0027, -0.0009, 0.0012}, {1, 0.8, 0.4}, 3e-5);
+  std::vector<tri::ContactRecord> records;
+  double history[2 * tri::kHistoryDoubles] = {};
+  const auto r = tri::pair_contact_force({p, q}, a, b, c, 1e-5, history, &records);
+  ASSERT_EQ(records.size(), 2u);
+  const tri::Virial v = pair_virial(records);
+  tri::Virial expected{};
+  tri::add_virial(a.x - b.x, r.force_a, expected);
+  for (int k = 0; k < 6; ++k)
+    EXPECT_NEAR(v[k], expected[k], 1e-12 * r.force_a.norm() * (a.x - b.x).norm()) << k;
+  // Pressed together: the trace is positive, as LIGGGHTS's pair virial of spheres.
+  EXPECT_GT(v[0] + v[1] + v[2], 0.0);
+  // The records carry the forces the result applies.
+  Vector3d on_b = Vector3d::Zero();
+  for (const tri::ContactRecord &rec : records)
+    on_b += rec.force_on_b();
+  EXPECT_NEAR((on_b + r.force_a).norm(), 0.0, 1e-12 * r.force_a.norm());
+}
+
+TEST(ContactRecords, AskingForRecordsChangesNoForce) {
+  const ContactCoefficients c = material();
+  const BodyState a = body({0, 0, 0}, {0.1, 0, 0}, {0, 0, 5}, 1e-4);
+  const BodyState b = body({0.004, 0, 0}, {-0.1, 0, 0}, {0, 3, 0}, 1e-4);
+  const ContactPoint p = point({0.002, 0.0003, 0}, {1, 0, 0}, 5e-5);
+  double h1[tri::kHistoryDoubles] = {}, h2[tri::kHistoryDoubles] = {};
+  std::vector<tri::ContactRecord> records;
+  const auto plain = tri::pair_contact_force({p}, a, b, c, 1e-5, h1);
+  const auto with = tri::pair_contact_force({p}, a, b, c, 1e-5, h2, &records);
+  EXPECT_EQ(plain.force_a, with.force_a);
+  EXPECT_EQ(plain.torque_a, with.torque_a);
+  EXPECT_EQ(plain.torque_b, with.torque_b);
+  for (int k = 0; k < tri::kHistoryDoubles; ++k)
+    EXPECT_EQ(h1[k], h2[k]);
+}
