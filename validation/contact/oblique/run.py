@@ -5,7 +5,7 @@ ball of the icosphere's own mass, inertia and lever, and LIGGGHTS's own spheres 
 fix wall/gran model hooke/stiffness tangential history).
 
   /usr/bin/python3 run.py [--exe build/src_plugin/driver/liggghts-tri] [--work /tmp/oblique]
-                          [--liggghts /usr/bin/liggghts]
+                          [--liggghts /usr/bin/liggghts] [--layer inside|outside] [--eps EPS]
 
 Normal speed VN along -z, tangential speed vt = ratio x VN along +x (ratios 0.1, 0.3, 1, 3), no
 spin, no gravity; linear springs kn, kt = 2/7 kn and kt = kn, gamman = gammat = 0, mu 0.3.
@@ -13,7 +13,11 @@ Measured after the ball has left the wall: vt' = vx and omega' = omega_y. The re
 `ideal_ball` below, a replica of LIGGGHTS's hooke/stiffness wall contact with tangential
 history and nve/sphere's velocity Verlet; it is first checked against LIGGGHTS spheres (its
 m, I = 2/5 m r^2, r), then run with the icosphere's mesh mass, mesh inertia and the tri
-contact lever R + eps - overlap / 2. Errors: (vt'_tri - vt'_ref) / vt and
+contact lever: the contact point is midway through the overlap of the contact surfaces, as
+LIGGGHTS's r - overlap/2: R - overlap/2 with the layer inside the mesh (the default: the
+mesh, vertices at R, is the contact surface; the wall has no layer), R + eps - overlap/2 with
+`--layer outside` (the contact surface the mesh grown by eps, the wall's layer eps). eps: 10 um (the peak overlap, 6.5 um, fits the particle's layer, the wall
+contact's only one); `--layer outside --eps 5e-6` is the earlier deck (10 um of layers in all). Errors: (vt'_tri - vt'_ref) / vt and
 (omega'_tri - omega'_ref) R / vt, vt the incoming tangential speed. Prints the README tables,
 writes oblique.png next to this script. Needs Debian's numpy and matplotlib (/usr/bin/python3).
 """
@@ -32,7 +36,9 @@ import meshgen  # noqa: E402
 from ideal_ball import DT, GAP, STEPS, ideal_ball  # noqa: E402
 import valtools  # noqa: E402
 
-R, RHO, EPS = 0.002, 2500.0, 5e-6        # m, kg/m^3, m (soft layer; the wall's is the same)
+R, RHO = 0.002, 2500.0                  # m, kg/m^3
+EPS = 1e-5                              # m, soft layer (--eps)
+LAYER = "inside"                        # --layer: the particle's layer inside its mesh (default)
 KN, MU, VN = 20000.0, 0.3, 0.1           # N/m, -, m/s
 LEVELS = (3, 4, 5)
 RATIOS = (0.1, 0.3, 1.0, 3.0)            # vt / vn
@@ -71,11 +77,18 @@ def after(path, contact_col):
 
 
 def main():
+    global EPS, LAYER
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--exe", default=valtools.default_exe())
     ap.add_argument("--liggghts", default="/usr/bin/liggghts")
     ap.add_argument("--work", default="/tmp/oblique")
+    ap.add_argument("--layer", default="inside", choices=("inside", "outside"),
+                    help="fix tri/particles layer (default inside: the mesh is the contact surface)")
+    ap.add_argument("--eps", type=float, default=EPS, help="soft layer (m), default 1e-5")
     args = ap.parse_args()
+    EPS, LAYER = args.eps, args.layer
+    # the wall contact's soft layers: the particle's (inside), or the particle's and the wall's
+    layers = EPS if LAYER == "inside" else 2 * EPS
     exe = os.path.abspath(args.exe)
     os.makedirs(args.work, exist_ok=True)
     for level in LEVELS:
@@ -84,7 +97,9 @@ def main():
     meshgen.write_stl(os.path.join(args.work, "plane.stl"), *meshgen.plane(0.01))
 
     mass = {lv: mesh_mass_inertia(lv) for lv in LEVELS}
-    lever0 = R + EPS          # the tri lever at zero overlap in the sphere limit
+    # the tri lever at zero overlap in the sphere limit: where the contact surfaces meet
+    # (inside: the mesh, R; outside: the mesh grown by eps meets the wall's layer, R + eps)
+    lever0 = R if LAYER == "inside" else R + EPS
     res = {}                  # (level, series, ratio) -> dict
     check = []                # the reference against LIGGGHTS spheres
     peak = 0.0
@@ -117,7 +132,7 @@ def main():
                     valtools.run_deck(exe, os.path.join(HERE, "in.tri"),
                                       dict(out=name, mesh="ico%d.stl" % level,
                                            plane="plane.stl", R=R, eps=EPS, seed=seed,
-                                           **common),
+                                           layer=LAYER, **common),
                                       args.work, os.path.join(args.work, name + ".screen"))
                     row, rows = after(os.path.join(args.work, name), 8)
                     assert abs(row[10] / m - 1) < 1e-9, (name, row[10], m)
@@ -142,7 +157,7 @@ def main():
             valtools.run_deck(exe, os.path.join(HERE, "in.tri"),
                               dict(out=name, mesh="ico%d.stl" % level, plane="plane.stl", R=R,
                                    eps=EPS, seed=seed, kn=KN, kt=KN, mu=0, vn=VN, vt=0,
-                                   gap=GAP, dt=DT, steps=STEPS),
+                                   gap=GAP, dt=DT, steps=STEPS, layer=LAYER),
                               args.work, os.path.join(args.work, name + ".screen"))
             row, _ = after(os.path.join(args.work, name), 8)
             spins.append(math.sqrt(row[5] ** 2 + row[6] ** 2 + row[7] ** 2) * R / VN)
@@ -151,15 +166,17 @@ def main():
 
     print(valtools.machine_line())
     tc = math.pi * math.sqrt(mass[5][0] / KN)
-    print("icosphere vertex radius R = %g m, density %g, epsilon = %g m (particle and wall), "
+    print("icosphere vertex radius R = %g m, density %g, epsilon = %g m (layer %s: %s), "
           "kn = %g N/m, gamman = gammat = 0, mu = %g, vn = %g m/s, dt = %g s (contact time "
-          "pi sqrt(m / kn) = %.3g s = %d steps), %d steps; peak overlap %.3g m (in the layers "
-          "2 eps = %g m; spring estimate vn sqrt(m / kn) = %.3g m); orientations: orient "
-          "random %s" % (R, RHO, EPS, KN, MU, VN, DT, tc, round(tc / DT), STEPS, peak, 2 * EPS,
-                         VN * math.sqrt(mass[5][0] / KN), " ".join(map(str, SEEDS))))
+          "pi sqrt(m / kn) = %.3g s = %d steps), %d steps; peak overlap %.3g m (in the wall "
+          "contact's layers %g m; spring estimate vn sqrt(m / kn) = %.3g m); orientations: orient "
+          "random %s" % (R, RHO, EPS, LAYER, "the particle's only" if LAYER == "inside" else
+                         "the particle's and the wall's", KN, MU, VN, DT, tc, round(tc / DT),
+                         STEPS, peak, layers, VN * math.sqrt(mass[5][0] / KN),
+                         " ".join(map(str, SEEDS))))
     print()
     print("| level | triangles | mean edge (um) | facet sag R (1 - cos) (um) | mass (kg) | "
-          "I mesh (kg m^2) | I / (2/5 m R^2) | I / (2/5 m (R + eps)^2) |")
+          "I mesh (kg m^2) | I / (2/5 m R^2) | I / (2/5 m lever0^2) |")
     print("|---|---|---|---|---|---|---|---|")
     for level in LEVELS:
         m, inertia = mass[level]
@@ -168,14 +185,16 @@ def main():
             level, 20 * 4 ** level, 1e6 * edge, 1e6 * sag, m, inertia,
             inertia / (0.4 * m * R * R), inertia / (0.4 * m * lever0 ** 2)))
     print()
-    print("reference (ideal_ball) against LIGGGHTS spheres (r = R + eps = %g m, the mesh mass, "
-          "I = 2/5 m r^2), %d runs: worst |difference| of vt', vz', omega' R = %.2g x the "
-          "incoming speed" % (lever0, len(check), max(check)))
+    print("reference (ideal_ball) against LIGGGHTS spheres (r = lever0 = %s = %g m, the mesh "
+          "mass, I = 2/5 m r^2), %d runs: worst |difference| of vt', vz', omega' R = %.2g x the "
+          "incoming speed" % ("R" if LAYER == "inside" else "R + eps", lever0,
+                              len(check), max(check)))
     print()
-    print("Errors against the ideal ball of the icosphere's mass and inertia, lever R + eps - "
+    print("Errors against the ideal ball of the icosphere's mass and inertia, lever %s - "
           "overlap/2: e_v = (vt'_tri - vt'_ref) / vt, e_w = (omega'_tri - omega'_ref) R / vt; "
           "mean (signed) and worst |.| over the %d orientations; off-plane: worst of |vy'|, "
-          "|omega_x'| R, |omega_z'| R over vt" % len(SEEDS))
+          "|omega_x'| R, |omega_z'| R over vt" % ("R" if LAYER == "inside" else "R + eps",
+                                                  len(SEEDS)))
     print()
     print("| kt / kn | vt / vn | level | vt'/vt ref | omega' R / vt ref | LIGGGHTS sphere "
           "vt'/vt, omega' R/vt | e_v mean | e_v worst | e_w mean | e_w worst | off-plane "
@@ -250,10 +269,10 @@ def main():
     ax[1].legend(fontsize=7, ncol=2)
     fig.suptitle("Oblique impact on a plane: icosphere (fix tri/wall) against the ideal ball of "
                  "its mass, inertia and lever; lines: worst of %d orientations, open markers: "
-                 "mean |error|\nkn %g N/m, eps %g um, vn %g m/s, mu %g, gamman = gammat = 0"
-                 % (len(SEEDS), KN, 1e6 * EPS, VN, MU), fontsize=9)
+                 "mean |error|\nkn %g N/m, eps %g um (layer %s), vn %g m/s, mu %g, gamman = "
+                 "gammat = 0" % (len(SEEDS), KN, 1e6 * EPS, LAYER, VN, MU), fontsize=9)
     fig.tight_layout()
-    out = os.path.join(HERE, "oblique.png")
+    out = os.path.join(HERE, "oblique.png" if LAYER == "inside" else "oblique_outside.png")
     fig.savefig(out, dpi=110)
     print("plot:", out)
     return 0
