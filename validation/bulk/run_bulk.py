@@ -3,7 +3,7 @@
 
   python3 validation/bulk/run_bulk.py [--quick] [--study ico platonic] [--Y 5e6 5e7]
       [--n 200] [--width-d 5] [--sphere-seeds 5] [--tri-seeds 1] [--cases NAME ...] [--exe liggghts-tri] [--liggghts liggghts]
-      [--work /tmp/bulk/work] [--label NAME] [--tap CYCLES] [--reuse]
+      [--work /tmp/bulk/work] [--label NAME] [--tap CYCLES] [--dt-tri DT] [--reuse]
   /usr/bin/python3 validation/bulk/plot_bulk.py results/bulk_NAME.json
 
 N particles of volume-equivalent diameter d = 4 mm (density 2500) are placed at once at random
@@ -118,7 +118,7 @@ def geometry(study, n, width_d, reach=None):
     return dict(W=w, H=zhi + 0.005, zlo=zlo, zhi=zhi, tpour=1.05 * zhi / V_FALL + 0.05)
 
 
-def deck_vars(case, geo, n, out, meshdir, floor, quick, tap):
+def deck_vars(case, geo, n, out, meshdir, floor, quick, tap, dt_tri=None):
     y = case["Y"]
     v = dict(W=geo["W"], H=geo["H"], floor=floor, Y=y, N=n, zlo=geo["zlo"], zhi=geo["zhi"],
              seed=SEEDS[case["seed"] % len(SEEDS)],
@@ -127,7 +127,7 @@ def deck_vars(case, geo, n, out, meshdir, floor, quick, tap):
              ncycles=tap if case["study"] == "platonic" else 0, tapperiod=TAP_PERIOD,
              tapamp=TAP_GAMMA * G * (TAP_PERIOD / (2 * math.pi)) ** 2)
     if case["kind"] == "tri":
-        v.update(dt=DT_TRI[y], shape=shape_file(case["shape"], meshdir), layer=case["layer"],
+        v.update(dt=dt_tri or DT_TRI[y], shape=shape_file(case["shape"], meshdir), layer=case["layer"],
                  oseed=99 + case["seed"])
     else:
         v.update(dt=DT_SPHERE[y])
@@ -219,7 +219,7 @@ def run_case(case, args, geo, meshdir, floor):
     dump = os.path.join(out, "final.dump")
     exe = args.exe if case["kind"] == "tri" else args.liggghts
     deck = os.path.join(HERE, "in.tri" if case["kind"] == "tri" else "in.spheres")
-    v = deck_vars(case, geo, args.n, out, meshdir, floor, args.quick, args.tap)
+    v = deck_vars(case, geo, args.n, out, meshdir, floor, args.quick, args.tap, args.dt_tri)
     # the log keeps the commands up to an ERROR whose screen line Open MPI's abort may swallow
     cmd = ["nice", "-n", "10"] + valtools.deck_command(exe, deck, v, os.path.join(out, "log.lammps"))
     wall = None
@@ -338,6 +338,7 @@ def main():
     ap.add_argument("--label", default="run")
     ap.add_argument("--reach", type=float,
                     help="size the insertion region for this reach (m) instead of the study's")
+    ap.add_argument("--dt-tri", type=float, help="time step of the mesh particles (s) instead of DT_TRI")
     ap.add_argument("--tap", type=int, default=0,
                     help="platonic study: shake the settled bed for this many floor cycles (tap.in)")
     ap.add_argument("--reuse", action="store_true", help="reuse final.dump files of earlier runs")
