@@ -91,16 +91,8 @@ def geometry(n):
 
 
 def read_centres(path):
-    rows, atoms = [], False
-    with open(path) as f:
-        for line in f:
-            if line.startswith("ITEM: ATOMS"):
-                atoms = True
-                continue
-            if atoms and line.strip():
-                p = line.split()
-                rows.append((float(p[3]), float(p[4]), float(p[5])))
-    return rows
+    """[(x, y, z)] of a write_dump custom file: id type mass x y z."""
+    return [(r[3], r[4], r[5]) for r in run_bulk.dump_rows(path)]
 
 
 def surface(rows, width=D):
@@ -159,14 +151,7 @@ def run_case(name, seed, args, geo, meshdir, box, gate):
     if not (args.reuse and os.path.exists(dump)):
         if os.path.exists(dump):
             os.remove(dump)
-        for attempt in range(2):
-            t0 = time.time()
-            with open(screen, "w") as f:
-                r = subprocess.run(cmd, cwd=HERE, env=valtools.run_env(1), stdout=f,
-                                   stderr=subprocess.STDOUT)
-            wall = time.time() - t0
-            if r.returncode == 0 or "LIGGGHTS (Version" in open(screen, errors="replace").read():
-                break
+        r, wall = run_bulk.run_logged(cmd, screen, tag)
         with open(wall_file, "w") as f:
             f.write(f"{wall:.3f}\n")
         if r.returncode != 0 or not os.path.exists(dump):

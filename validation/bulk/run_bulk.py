@@ -134,8 +134,8 @@ def deck_vars(case, geo, n, out, meshdir, floor, quick, tap, dt_tri=None):
     return v
 
 
-def read_dump(path):
-    """[(mass, z)] of a write_dump custom file: id type mass x y z."""
+def dump_rows(path):
+    """The atom rows of a one-frame write_dump custom file, as lists of floats."""
     rows, atoms = [], False
     with open(path) as f:
         for line in f:
@@ -143,9 +143,13 @@ def read_dump(path):
                 atoms = True
                 continue
             if atoms and line.strip():
-                p = line.split()
-                rows.append((float(p[2]), float(p[5])))
+                rows.append([float(x) for x in line.split()])
     return rows
+
+
+def read_dump(path):
+    """[(mass, z)] of a write_dump custom file: id type mass x y z."""
+    return [(r[2], r[5]) for r in dump_rows(path)]
 
 
 def solid_fraction(rows, w):
@@ -211,6 +215,25 @@ def parse_screen(path):
     return info
 
 
+def run_logged(cmd, screen, tag):
+    """Runs cmd in this folder, its output in `screen`: (CompletedProcess, wall seconds). Open
+    MPI's singleton start-up now and then fails before LIGGGHTS starts ("ORTE_ERROR_LOG: Data
+    unpack would read past end of buffer"): then once more."""
+    for attempt in range(2):
+        if attempt:
+            print(f"  {tag}: no LIGGGHTS output (an Open MPI start-up failure?), once more",
+                  flush=True)
+            time.sleep(2.0)
+        t0 = time.time()
+        with open(screen, "w") as f:
+            r = subprocess.run(cmd, cwd=HERE, env=valtools.run_env(1), stdout=f,
+                               stderr=subprocess.STDOUT)
+        wall = time.time() - t0
+        if r.returncode == 0 or "LIGGGHTS (Version" in open(screen, errors="replace").read():
+            break
+    return r, wall
+
+
 def run_case(case, args, geo, meshdir, floor):
     tag = f"{case['study']}_Y{case['Y']:g}_{case['name']}_s{case['seed']}"
     out = os.path.join(args.work, tag)
@@ -226,19 +249,7 @@ def run_case(case, args, geo, meshdir, floor):
     if not (args.reuse and os.path.exists(dump)):
         if os.path.exists(dump):
             os.remove(dump)
-        for attempt in range(2):
-            if attempt:
-                time.sleep(2.0)
-            t0 = time.time()
-            with open(screen, "w") as f:
-                r = subprocess.run(cmd, cwd=HERE, env=valtools.run_env(1), stdout=f,
-                                   stderr=subprocess.STDOUT)
-            wall = time.time() - t0
-            # Open MPI's singleton start-up now and then fails before LIGGGHTS starts
-            # ("ORTE_ERROR_LOG: Data unpack would read past end of buffer"): start again
-            if r.returncode == 0 or "LIGGGHTS (Version" in open(screen, errors="replace").read():
-                break
-            print(f"  {tag}: no LIGGGHTS output (an Open MPI start-up failure?), once more", flush=True)
+        r, wall = run_logged(cmd, screen, tag)
         if r.returncode != 0 or not os.path.exists(dump):
             print(f"  {tag}: FAILED (exit {r.returncode}), see {screen}", flush=True)
             res = dict(case, tag=tag, failed=True, exit=r.returncode, wall_s=wall,
