@@ -1,5 +1,5 @@
-// Triangle-pair candidates kept between steps for one body pair: temporal coherence (issue 12,
-// item 1). Bodies in contact, in a pile above all, barely move from one step to the next, yet
+// Triangle-pair candidates kept between steps for one body pair: temporal coherence.
+// Bodies in contact, in a pile above all, barely move from one step to the next, yet
 // the cull (boxes in two frames, then the separating-axis test of each surviving triangle
 // pair) would rebuild the same short list every step. Instead the list is built once with a
 // wider margin, cutoff + reach, and reused while the bodies cannot have moved far enough for a

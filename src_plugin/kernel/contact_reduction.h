@@ -75,7 +75,7 @@
 //     (validation/contact/energy_nonconvex; test ClosestPointsSeenByManyPairsCountOnce). F is
 //     faded in over the first
 //     taper of depth, so a contact starts and ends at F = 0. With a taper whose point was not
-//     F's gradient (the rule before session 11), a member crossing the band in a few steps
+//     F's gradient, a member crossing the band in a few steps
 //     gained or lost energy: non-convex gears, voxel jacks and U shapes colliding without
 //     damping or friction ended 0.3-4e-4 off and did not converge as dt fell
 //     (validation/contact/energy_nonconvex).
@@ -134,11 +134,11 @@
 //     deeper than the polygons by more than the taper: their share rises from 0 to 1 (smooth
 //     step) as they exceed D by 1 to 2 tapers, moving D, p_D and the normal to theirs and
 //     beta to 0; within it they are the same closest points seen through the kernel's
-//     tolerance. D here is the plain maximum and p_D its tapered region (the rule step 5 had
-//     before session 11): a contact whose last polygon member tilts past 10 degrees moves to
+//     tolerance. D here is the plain maximum and p_D its tapered region (not step 5's smooth
+//     maximum): a contact whose last polygon member tilts past 10 degrees moves to
 //     step 5's smooth maximum, which equals D where the members are tied with the deepest (a
-//     rock's face leaving a face, seen by several triangle pairs at once); tried and dropped:
-//     the smooth maximum here too, with the members without a polygon lowered by 2 beta
+//     rock's face leaving a face, seen by several triangle pairs at once). Not the smooth
+//     maximum here too, with the members without a polygon lowered by 2 beta
 //     tapers so that a face's rim stays out -- its energy couples F to beta, whose gradient
 //     scales as 1 / D, and a cube landing on a plane was kicked to 5 rad/s at D ~ taper.
 //     Members that are not nearly parallel (vertex-face, edge-edge, edge-face,

@@ -67,7 +67,7 @@ struct ContactOptions {
   // With cull: also boxes in a frame along the line between the two bodies' box centres and
   // the separating-axis test per pair (triangle_boxes.h: cull_triangle_pairs_two_frames,
   // separating_axis_filter);
-  // false: world-frame boxes only (the cull before issue 12). Same contacts either way.
+  // false: world-frame boxes only (the plain cull, for comparison). Same contacts either way.
   bool tight_cull = true;
   int newton_iterations = 4;     // penalty steps; one of penalty_iterations_supported()
   // Hybrid: the second penalty run of the pairs the first cannot certify, before brute force

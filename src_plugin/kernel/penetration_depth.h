@@ -1,5 +1,5 @@
 // Depth of a contact through the intersection of two bodies' real surfaces: what keeps the
-// repulsion growing once the soft layers are overrun (issue 10, item 5).
+// repulsion growing once the soft layers are overrun.
 //
 // Why. A triangle pair is reported only while its distance is below the combined layer
 // L = eps_a + eps_b (particle_contacts.h), and an intersecting pair's own depth (the

@@ -1,6 +1,6 @@
 // Separating axes between two bodies of triangles: a cheap, exact proof that no triangle pair
 // of the two is in contact, so a body pair that touches nothing costs O(vertices) instead of a
-// triangle-pair search (issue 12, item 2). The host keeps the last proven axis of each body
+// triangle-pair search. The host keeps the last proven axis of each body
 // pair (pair tri/gran in LIGGGHTS's contact history, fix tri/wall per atom and mesh) and hands
 // it back the next step; body_interaction.h verifies it before anything else.
 //

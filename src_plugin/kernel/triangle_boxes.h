@@ -74,7 +74,7 @@ struct CullScratch {
 int cull_triangle_pairs(const TriangleBoxes &a, const TriangleBoxes &b, double margin,
                         CullScratch &scratch, std::vector<TrianglePairIndex> &pairs);
 
-// The same cull in two frames at once (issue 12, item 1): `a`, `b` are the world-frame boxes,
+// The same cull in two frames at once: `a`, `b` are the world-frame boxes,
 // `fa`, `fb` the boxes of the same triangles in a second orthonormal frame (rotated
 // coordinates, e.g. with its first axis along the line between the bodies, where world boxes
 // of tilted triangles are loose). A pair is kept only if its boxes overlap with `margin` in

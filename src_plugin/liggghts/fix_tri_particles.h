@@ -161,7 +161,7 @@ public:
   // ensure_world_triangles_of: the first task that needs the record builds it on its thread,
   // so a step has no separate pass over the tasks' atoms.
   void ensure_body_of(int i);
-  // World-frame triangles only where needed (issue 12, item 4), each atom's computed from x and
+  // World-frame triangles only where needed, each atom's computed from x and
   // its quaternion at most once per force evaluation. For atoms [0, n), outside a parallel
   // loop (output):
   void update_world_triangles(int n);
