@@ -122,7 +122,7 @@ def deck_vars(case, geo, n, out, meshdir, floor, quick, tap, dt_tri=None):
     y = case["Y"]
     v = dict(W=geo["W"], H=geo["H"], floor=floor, Y=y, N=n, zlo=geo["zlo"], zhi=geo["zhi"],
              seed=SEEDS[case["seed"] % len(SEEDS)],
-             gamma=MASS * G / V_FALL, out=out, tpour=geo["tpour"], tchunk=0.02,
+             gamma=MASS * G / V_FALL, vfall=V_FALL, out=out, tpour=geo["tpour"], tchunk=0.02,
              nsettle=3 if quick else 15, kemin=1e-3 * n * MASS * G * D,
              ncycles=tap if case["study"] == "platonic" else 0, tapperiod=TAP_PERIOD,
              tapamp=TAP_GAMMA * G * (TAP_PERIOD / (2 * math.pi)) ** 2)
@@ -333,6 +333,7 @@ def table(results):
 
 
 def main():
+    global V_FALL
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--quick", action="store_true",
                     help="smoke run: 120 particles, Y 5e6, one sphere seed, 4 shapes, short settling")
@@ -352,8 +353,11 @@ def main():
     ap.add_argument("--dt-tri", type=float, help="time step of the mesh particles (s) instead of DT_TRI")
     ap.add_argument("--tap", type=int, default=0,
                     help="platonic study: shake the settled bed for this many floor cycles (tap.in)")
+    ap.add_argument("--v-fall", type=float, default=V_FALL,
+                    help="terminal speed of the rain (m/s, default 1): a gentler pour")
     ap.add_argument("--reuse", action="store_true", help="reuse final.dump files of earlier runs")
     args = ap.parse_args()
+    V_FALL = args.v_fall
     if args.quick:
         args.n, args.Y, args.sphere_seeds = 120, [5e6], 1
         args.cases = args.cases or ["spheres", "ico80_inside", "ico320_outside", "cube"]
