@@ -93,7 +93,7 @@ def table(paths):
     for r in stored:
         if r["name"] == "cube" and not r["failed"]:
             r = dict(r, steps_per_sim_s=1 / r["dt"], s_per_sim_s=r["loop_s"] / (r["steps"] * r["dt"]))
-            groups.setdefault("mesh cube, stored (b5a1724, pour + 40 taps)", []).append(r)
+            groups.setdefault("mesh cube, stored (2d6093e, pour + 40 taps)", []).append(r)
     for p in paths:
         for r in json.load(open(p))["results"]:
             if r.get("failed"):
