@@ -26,20 +26,6 @@ SHAPES = run_bulk.PLATONIC + ["icosphere2"]
 KINDS = {1: "face", 2: "edge", 3: "vertex", 4: "deep"}
 
 
-def local_rows(path):
-    rows, inside = [], False
-    with open(path) as f:
-        for line in f:
-            if line.startswith("ITEM: ENTRIES"):
-                inside = True
-                continue
-            if line.startswith("ITEM:"):
-                inside = False
-            elif inside and line.strip():
-                rows.append([float(x) for x in line.split()])
-    return rows
-
-
 def run(shape, seed, args, meshdir, floor):
     study = "ico" if shape.startswith("icosphere") else "platonic"
     geo = run_bulk.geometry(study, args.n, 5.0)
@@ -58,9 +44,10 @@ def run(shape, seed, args, meshdir, floor):
     top = max(a[4] for a in atoms)
     lo, hi = 1.5 * run_bulk.D, top - 1.5 * run_bulk.D
     bulk = [a[5] for a in atoms if lo <= a[4] <= hi]
-    kinds = [int(row[3]) for row in local_rows(os.path.join(out, "network.dump"))]
+    network = run_bulk.dump_rows(os.path.join(out, "network.dump"), "ENTRIES")  # id1 id2 flag kind
+    kinds = [int(row[3]) for row in network]
     shares = {name: kinds.count(k) / max(1, len(kinds)) for k, name in KINDS.items()}
-    pairs = len({(int(row[0]), int(row[1])) for row in local_rows(os.path.join(out, "network.dump"))})
+    pairs = len({(int(row[0]), int(row[1])) for row in network})
     return dict(shape=shape, seed=seed, N=len(atoms), n_bulk=len(bulk),
                 z_bulk=sum(bulk) / max(1, len(bulk)), z_all=2.0 * pairs / len(atoms),
                 points=len(kinds), points_per_pair=len(kinds) / max(1, pairs), wall_s=wall,

@@ -134,15 +134,15 @@ def deck_vars(case, geo, n, out, meshdir, floor, quick, tap, dt_tri=None):
     return v
 
 
-def dump_rows(path):
-    """The atom rows of a one-frame write_dump custom file, as lists of floats."""
-    rows, atoms = [], False
+def dump_rows(path, section="ATOMS"):
+    """The rows of a dump file's `section` (ATOMS of dump custom, ENTRIES of dump local), all
+    frames, as lists of floats."""
+    rows, inside = [], False
     with open(path) as f:
         for line in f:
-            if line.startswith("ITEM: ATOMS"):
-                atoms = True
-                continue
-            if atoms and line.strip():
+            if line.startswith("ITEM:"):
+                inside = line.startswith("ITEM: " + section)
+            elif inside and line.strip():
                 rows.append([float(x) for x in line.split()])
     return rows
 
