@@ -670,7 +670,17 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
   const Vector3d poly_deepest_normal =
       excess_len > 0.0 ? Vector3d(excess_normal / excess_len) : poly_normal;
   const double mean = weight / area, mean_square = weight2 / area;
-  const double r = std::max(0.0, D_poly - mean) / (kFlatPatchBand * D_poly);
+  // How uneven, over the patch or over a layer's width, whichever is wider: a polygon that
+  // shrinks to a sliver at a corner is uniform by its size alone, however steep its faces, and
+  // judged flat its energy (a mean over a region whose edges move) would lose the work of those
+  // edges: a tilted face's unevenness across a layer, slope x layer / 2, keeps it the deepest
+  // pair's. Wide patches are uneven over their own width first, so it changes nothing there.
+  const double unevenness = std::max(0.0, D_poly - mean);
+  const double slant = 0.5 * layer * (gradient1 / area).norm();
+  const double uneven_total = std::hypot(unevenness, slant);
+  const double r = uneven_total / (kFlatPatchBand * D_poly);
+  // dr/d(D - mean): the share of the unevenness that the patch's own overlaps carry.
+  const double uneven_share = uneven_total > 0.0 ? unevenness / uneven_total : 1.0;
   const double beta = flat_blend(r);
 
   // A body that samples a smooth surface (smooth_surface.h) is measured on it: the polygons'
@@ -808,10 +818,11 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
       blend_deep = -jump * weight / (D * D * facet_scale);
     }
     const double a_deep = 2.0 * (1.0 - b) * (1.0 - w) * D +
-                          q_minus * slope * (1.0 - kFlatPatchBand * r) / (kFlatPatchBand * D) +
+                          q_minus * slope * (uneven_share - kFlatPatchBand * r) /
+                              (kFlatPatchBand * D) +
                           blend_deep;
     const double curved_scale = 2.0 * (1.0 - b) * w * phi;
-    const double a_area = -q_minus * slope / (kFlatPatchBand * D) + blend_area;
+    const double a_area = -q_minus * slope * uneven_share / (kFlatPatchBand * D) + blend_area;
     const double a_pressure = 2.0 * b * mean;
     const Vector3d area_centre = s.point + area1 / area;
     const Vector3d pressure_centre =

@@ -105,8 +105,12 @@
 //             onto the polygon's own deepest level (a tilted face's deepest point is then ON its
 //             low edge, not a taper's width inside it: 1e-4 instead of 1.5e-3 work error in
 //             FaceContactForceIsTheGradientOfItsEnergy);
-//       r   = (D - m) / (kFlatPatchBand D) (how uneven: 0 lying flat; a vertex's cone or an
-//             edge's wedge has m = D/3 or D/2 at any depth, r >= 5);
+//       r   = hypot(D - m, g layer / 2) / (kFlatPatchBand D), g the polygons' mean overlap
+//             slope (how uneven, over the patch or across a layer's width, whichever is wider:
+//             0 lying flat; a vertex's cone or an edge's wedge has m = D/3 or D/2 at any depth,
+//             r >= 5; a sliver of a steep face at a corner is uniform by its size alone, and
+//             taken for flat its energy, a mean over a region whose edges sweep through it,
+//             would miss their work: test SliverOfATiltedFaceKeepsTheEnergy);
 //       beta = 1 - 3 r^2 + 2 r^3 for r < 1, 0 beyond (C1 at both ends).
 //     The contact's energy is 1/2 kn Omega,  Omega = (1 - beta) D^2 + beta Q:
 //     the deepest pair's law from r = 1 on (a clearly uneven face, an impacting edge), and lying
@@ -115,10 +119,12 @@
 //     resting face's pressure shifting towards its low side as a real one does. Since A is fixed
 //     while a face lies flat (its whole face overlaps), dm = do(c_A), dQ = 2 m do(c_P) and
 //     dD = do(p_D) for a motion that changes the local overlap by do(x); with
-//     dr = ((1 - b r) dD - dm) / (b D)  (b = kFlatPatchBand):
+//     dr = ((k - b r) dD - k dm) / (b D)  (b = kFlatPatchBand, k = (D - m) / (r b D), 1 unless
+//     the slope term counts; the slope's own change is left out: it weighs Q - D^2, ~0 where
+//     it matters):
 //       d Omega = a_D do(p_D) + a_A do(c_A) + a_P do(c_P),
-//       a_D = 2 (1 - beta) D + (Q - D^2) beta' (1 - b r) / (b D),
-//       a_A = -(Q - D^2) beta' / (b D),     a_P = 2 beta m,
+//       a_D = 2 (1 - beta) D + (Q - D^2) beta' (k - b r) / (b D),
+//       a_A = -(Q - D^2) beta' k / (b D),     a_P = 2 beta m,
 //     so the force is kn (a_D + a_A + a_P) / 2 (reported as `overlap`, `energy_overlap` =
 //     sqrt(Omega)) along the normal at the point (a_D p_D + a_A c_A + a_P c_P) / (a_D + a_A + a_P)
 //     (the sum is at least 1.67 D: Q <= D^2, beta' <= 0). Lying flat: kn m at c_P, whatever the

@@ -8,7 +8,10 @@ default reduction (clusters) and the baseline `none` (one force per triangle con
 conservative by construction up to the integrator).
 
   /usr/bin/python3 run_gears.py [--exe build/src_plugin/driver/liggghts-tri] [--work DIR] [--reuse]
-                                [--shapes gear jack u rock]
+                                [--shapes gear jack u rock] [--bodies 2|6]
+
+--bodies 6: six bodies (jacks, U shapes or rocks) thrown from the corners of an octahedron
+towards its centre (in.six), meeting two, three and four at a time, over 15 ms.
 
 Target (issue 10, item 4): |E_after / E_before - 1| <= 1e-4 at the default dt (1e-6 s here:
 contact time pi sqrt(m_eff / kn) = 0.14 ms for the gears, 140 steps) and shrinking at least
@@ -30,7 +33,8 @@ from decklib import snapshots  # noqa: E402
 
 GEAR = os.path.join(REPO, "examples", "falling", "meshes", "gear.stl")
 DTS = [2e-6, 1e-6, 5e-7, 2.5e-7]
-T_END = 6e-3  # s: they meet after about 1.5 ms and have separated by then
+T_END = {2: 6e-3, 6: 15e-3}  # s: two meet after about 1.5 ms, six within 6 ms; all apart by then
+DECK = {2: "in.gears", 6: "in.six"}
 SEEDS = [1, 2, 3]
 REDUCTIONS = ["clusters", "none"]
 # Voxel shapes, cells of 1 (mm after the deck's scale 0.001): a jack (a cube with an arm on
@@ -64,16 +68,17 @@ def energy(rows):
     return e
 
 
-def run(exe, work, mesh, shape, red, seed, dt, reuse):
-    out = "%s_%s_s%d_dt%g.dump" % (shape, red, seed, dt)
+def run(exe, work, mesh, shape, red, seed, dt, reuse, bodies):
+    out = "%s_%d_%s_s%d_dt%g.dump" % (shape, bodies, red, seed, dt)
     path = os.path.join(work, out)
     if not (reuse and os.path.exists(path)):
-        variables = dict(seed=seed, red=red, dt=dt, steps=int(round(T_END / dt)), out=out)
+        variables = dict(seed=seed, red=red, dt=dt, steps=int(round(T_END[bodies] / dt)),
+                         out=out)
         if mesh:
             variables["gear"] = mesh
         else:
             variables["kind"] = "rock"
-        valtools.run_deck(exe, os.path.join(HERE, "in.gears"), variables, work,
+        valtools.run_deck(exe, os.path.join(HERE, DECK[bodies]), variables, work,
                           path + ".screen")
     snaps = snapshots(path)
     with open(os.path.join(work, "touch_" + out + ".txt")) as f:
@@ -88,9 +93,12 @@ def main():
     ap.add_argument("--exe", default=valtools.default_exe())
     ap.add_argument("--work", default="/tmp/liggghts-tri-validation/energy_nonconvex")
     ap.add_argument("--reuse", action="store_true")
-    ap.add_argument("--shapes", nargs="+", default=["gear", "jack", "u", "rock"],
-                    choices=list(NAMES))
+    ap.add_argument("--shapes", nargs="+", default=None, choices=list(NAMES),
+                    help="default: gear jack u rock (two bodies), jack u rock (six)")
+    ap.add_argument("--bodies", type=int, default=2, choices=[2, 6])
     args = ap.parse_args()
+    if args.shapes is None:
+        args.shapes = ["gear", "jack", "u", "rock"] if args.bodies == 2 else ["jack", "u", "rock"]
     exe = os.path.abspath(args.exe)
     os.makedirs(args.work, exist_ok=True)
     err = {}
@@ -100,10 +108,11 @@ def main():
             for seed in SEEDS:
                 for dt in DTS:
                     err[(shape, red, seed, dt)] = run(exe, args.work, mesh, shape, red, seed, dt,
-                                                      args.reuse)
+                                                      args.reuse, args.bodies)
     print(valtools.machine_line())
     print("density 2500, eps 0.1 mm, kn 2000 N/m, no damping, no friction, relative speed "
-          "0.6 m/s, spinning; " + "; ".join(NAMES[s] for s in args.shapes))
+          "0.6 m/s, spinning; %d bodies of each: " % args.bodies +
+          "; ".join(NAMES[s].replace("two ", "") for s in args.shapes))
     print()
     print("| bodies | reduction | orient seed | " +
           " | ".join("dE/E at dt %g s" % dt for dt in DTS) + " | ratio dt 2e-6 / dt 2.5e-7 |")
@@ -137,9 +146,11 @@ def main():
         ax.grid(alpha=0.3, which="both")
     axes[0][0].set_ylabel("|E_after / E_before - 1|")
     axes[0][0].legend(fontsize=6)
-    fig.suptitle("Non-convex bodies (and convex rocks) colliding, no damping or friction")
+    fig.suptitle("%s non-convex bodies (and convex rocks) colliding, no damping or friction"
+                 % {2: "Two", 6: "Six"}[args.bodies])
     fig.tight_layout()
-    out = os.path.join(HERE, "energy_nonconvex.png")
+    out = os.path.join(HERE, "energy_nonconvex.png" if args.bodies == 2 else
+                       "energy_nonconvex_six.png")
     fig.savefig(out, dpi=110)
     print("plot:", out)
 
