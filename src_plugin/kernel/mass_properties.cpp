@@ -40,12 +40,15 @@ void principal_frame(const Eigen::Matrix3d &inertia, Eigen::Vector3d &moments,
   const bool high_pair = moments[2] - moments[1] <= tol;
   if ((low_pair && high_pair) || moments[2] - moments[0] <= tol) {
     axes.setIdentity(); // every direction is principal: keep the mesh's axes
+    moments.setConstant(moments.mean());
   } else if (low_pair) {
+    moments.head<2>().setConstant(0.5 * (moments[0] + moments[1]));
     const Eigen::Vector3d unique = sign_fixed(v.col(2));
     axes.col(0) = nearest_axis_perpendicular(unique);
     axes.col(1) = unique.cross(axes.col(0));
     axes.col(2) = unique;
   } else if (high_pair) {
+    moments.tail<2>().setConstant(0.5 * (moments[1] + moments[2]));
     const Eigen::Vector3d unique = sign_fixed(v.col(0));
     axes.col(0) = unique;
     axes.col(1) = nearest_axis_perpendicular(unique);

@@ -34,12 +34,16 @@ MassProperties mass_properties(const TriangleMesh &mesh);
 // Eigen-decomposition of a symmetric inertia tensor with a deterministic convention:
 //  - moments ascending;
 //  - moments that agree within kDegenerateMomentTolerance x the largest are one repeated
-//    eigenvalue; its eigenspace has no preferred basis, so the basis is taken as close to
-//    the mesh's own axes as possible (a cube or sphere keeps its axes; a square prism keeps
-//    its two side axes) instead of whatever rounding noise picks;
+//    eigenvalue, reported as their mean; its eigenspace has no preferred basis, so the basis is
+//    taken as close to the mesh's own axes as possible (a cube, a regular polyhedron or an
+//    icosphere keeps its file's axes, turned however it is in the file; a square prism keeps
+//    its two side axes) instead of whatever rounding noise picks. The tolerance, 1e-5, lies
+//    above what a mesh file's coordinates carry (an STL's float32 ones, 6e-8, or six printed
+//    digits, put a turned cube's moments up to about 3e-6 apart) and far below a shape meant to
+//    differ; averaging changes the inertia by at most that share;
 //  - each axis points so that its component of largest magnitude is positive (ties: the
 //    lowest coordinate index), except the third, which is axis0 x axis1 (right-handed).
-constexpr double kDegenerateMomentTolerance = 1e-9;
+constexpr double kDegenerateMomentTolerance = 1e-5;
 void principal_frame(const Eigen::Matrix3d &inertia, Eigen::Vector3d &moments,
                      Eigen::Matrix3d &axes);
 

@@ -14,9 +14,10 @@ Coordinates are powers of two, so the STL's single-precision floats hold them ex
 """
 import math
 import os
+import struct
 import subprocess
 
-from decklib import check, last_frame, run_deck, write_stl
+from decklib import check, cube, last_frame, run_deck, write_binary_stl, write_stl
 
 A = 2.0 ** -9             # leg unit: the outline (0,0) (2a,0) (2a,a) (a,a) (a,2a) (0,2a), m
 H = 2.0 ** -10            # prism height, m
@@ -73,10 +74,10 @@ def quat_matrix(w, x, y, z):
             [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]]
 
 
-def run(ctx, orient):
+def run(ctx, orient, deck_text=DECK):
     deck = os.path.join(ctx.work, f"in.{orient}")
     with open(deck, "w") as f:
-        f.write(DECK.format(x=ATOM[0], y=ATOM[1], z=ATOM[2], orient=orient))
+        f.write(deck_text.format(x=ATOM[0], y=ATOM[1], z=ATOM[2], orient=orient))
     run_deck(ctx, deck, timeout=300)
     d = subprocess.run([ctx.vtkdump, os.path.join(ctx.work, "post", f"{orient}_0.vtp"), "id",
                         "points"], stdout=subprocess.PIPE, text=True, check=True).stdout
@@ -152,3 +153,66 @@ def test_orient(ctx):
                     bad += 1
     check(not bad, f"orient none: {bad} corner coordinates not on the diagonal grid: the "
                    "principal axes are not the world axes")
+
+
+def turned(tris, axis, angle, shift):
+    """The triangles turned by `angle` about the unit `axis` (Rodrigues), then moved by shift,
+    rounded to single precision as a binary STL stores them."""
+    ux, uy, uz = axis
+    c, s = math.cos(angle), math.sin(angle)
+    r = [[c + ux * ux * (1 - c), ux * uy * (1 - c) - uz * s, ux * uz * (1 - c) + uy * s],
+         [uy * ux * (1 - c) + uz * s, c + uy * uy * (1 - c), uy * uz * (1 - c) - ux * s],
+         [uz * ux * (1 - c) - uy * s, uz * uy * (1 - c) + ux * s, c + uz * uz * (1 - c)]]
+    single = lambda v: struct.unpack("<f", struct.pack("<f", v))[0]
+    return [[[single(sum(r[i][k] * p[k] for k in range(3)) + shift[i]) for i in range(3)]
+             for p in t] for t in tris]
+
+
+def octahedron(h=0.0015):
+    v = [(h, 0, 0), (-h, 0, 0), (0, h, 0), (0, -h, 0), (0, 0, h), (0, 0, -h)]
+    tris = []
+    for sx in (0, 1):
+        for sy in (2, 3):
+            for sz in (4, 5):
+                t = [v[sx], v[sy], v[sz]]
+                # outward: counter-clockwise seen from outside
+                if (sx == 1) ^ (sy == 3) ^ (sz == 5):
+                    t = [t[0], t[2], t[1]]
+                tris.append(t)
+    return tris
+
+
+def solid_centre(tris):
+    vol, centre = 0.0, [0.0, 0.0, 0.0]
+    for p0, p1, p2 in tris:
+        v6 = (p0[0] * (p1[1] * p2[2] - p1[2] * p2[1]) - p0[1] * (p1[0] * p2[2] - p1[2] * p2[0])
+              + p0[2] * (p1[0] * p2[1] - p1[1] * p2[0]))
+        vol += v6 / 6
+        for k in range(3):
+            centre[k] += v6 / 6 * (p0[k] + p1[k] + p2[k]) / 4
+    return [cc / vol for cc in centre]
+
+
+def test_orient_none_keeps_a_turned_isotropic_shape(ctx):
+    """A cube and a regular octahedron (equal principal moments: every direction is principal)
+    turned in their files by an arbitrary rotation, in single precision: `orient none` keeps the
+    file's axes within mass_properties.h's tolerance (1e-5 of the moments), so the particle
+    stands as in its file, every .vtp corner the file's moved by x_atom - centre of mass."""
+    os.makedirs(os.path.join(ctx.work, "post"))
+    n = math.sqrt(1 + 4 + 9)
+    axis = (1 / n, -2 / n, 3 / n)
+    shapes = {"cube": [[[c - 0.001 for c in p] for p in t] for t in cube()],
+              "octa": octahedron()}
+    for name, tris in shapes.items():
+        file_tris = turned(tris, axis, 0.7, (0.003, -0.001, 0.002))
+        write_binary_stl(os.path.join(ctx.work, "ell.stl"), file_tris)
+        c = solid_centre(file_tris)
+        cells, x, q = run(ctx, "none", DECK.replace("shape ell", "shape " + name))
+        check(q == [1.0, 0.0, 0.0, 0.0], f"{name}, orient none: quaternion {q}, expected 1 0 0 0")
+        worst = max(abs(w[k] - (p[k] - c[k] + x[k]))
+                    for t, cell in zip(file_tris, cells) for p, w in zip(t, cell) for k in range(3))
+        print(f"{name}: .vtp corners against the file's moved onto the atom: largest difference "
+              f"{worst:.3g} m")
+        check(len(cells) == len(file_tris) and worst <= 1e-12,
+              f"{name}, orient none: the particle is turned against its file (corners {worst:.3g} m"
+              " off): its equal principal moments were not taken as equal")

@@ -102,6 +102,34 @@ TEST(MassProperties, RepeatedMomentsKeepTheMeshAxes) {
   expect_right_handed_rotation(prism.principal_axes);
 }
 
+// A shape with three equal moments, turned in its file by an arbitrary rotation and written
+// with float32 coordinates (a binary STL): its moments agree to about 1e-7, not to rounding, and
+// must still count as equal, so that `orient none` keeps the file's axes (the shape stands as
+// in the file) instead of the eigen-solver's arbitrary ones.
+TEST(MassProperties, TurnedIsotropicShapesInFloatKeepTheFileAxes) {
+  auto as_float = [](tri::TriangleMesh m) {
+    for (Eigen::Vector3d &v : m.vertices)
+      v = v.cast<float>().cast<double>();
+    return m;
+  };
+  const Eigen::Vector3d shift(0.3, -0.2, 0.1);
+  for (const tri::TriangleMesh &shape : {box(1, 1, 1), tri_test::icosphere(0),
+                                         tri_test::icosphere(2)}) {
+    const tri::MassProperties mp =
+        tri::mass_properties(as_float(transformed(shape, some_rotation(), shift)));
+    EXPECT_TRUE(mp.principal_axes.isApprox(Eigen::Matrix3d::Identity(), 1e-15))
+        << mp.principal_axes;
+    EXPECT_EQ(mp.principal_moments[0], mp.principal_moments[2]);
+    // The mean moment is the shape's, to the file's precision.
+    const double exact = tri::mass_properties(shape).principal_moments[0];
+    EXPECT_NEAR(mp.principal_moments[1], exact, 1e-6 * exact);
+  }
+  // A prism 1e-3 longer than wide is not a cube: its axes are the rotated ones.
+  const tri::MassProperties prism =
+      tri::mass_properties(as_float(transformed(box(1, 1, 1.001), some_rotation(), shift)));
+  EXPECT_NEAR(std::abs(prism.principal_axes.col(0).dot(some_rotation().col(2))), 1.0, 1e-9);
+}
+
 TEST(MassProperties, Tetrahedron) {
   const tri::MassProperties mp = tri::mass_properties(tri_test::tetrahedron());
   EXPECT_NEAR(mp.volume, 1.0 / 6.0, 1e-15);
