@@ -17,8 +17,9 @@ if [ "${TRI_SKIP_SANITIZERS:-0}" != 1 ]; then
   # Our own code (kernel, io, tools) with leak checking.
   ctest --test-dir build-asan --output-on-failure -j"$(nproc)" -L 'kernel|io|tools'
   # The decks run LIGGGHTS and Open MPI, whose start-up and shut-down allocations are never
-  # freed (traced: none in src_plugin), and LIGGGHTS's Error::all bug (suppressions file).
-  ASAN_OPTIONS="detect_leaks=0:suppressions=$PWD/tests/sanitizer_suppressions_asan.txt" \
+  # freed (traced: none in src_plugin). LIGGGHTS's own error exits read freed memory; the
+  # driver's (src_plugin/driver/error_output.cpp) stand in for them, so no suppression is needed.
+  ASAN_OPTIONS="detect_leaks=0" \
     ctest --test-dir build-asan --output-on-failure -j"$(nproc)" -L deck
 fi
 

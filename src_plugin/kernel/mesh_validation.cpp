@@ -174,6 +174,9 @@ void check_outward(const TriangleMesh &mesh, double length_scale) {
                       .dot((mesh.corner(t, 1) - origin).cross(mesh.corner(t, 2) - origin));
   const double volume = six_volume / 6.0;
   const double flat = kFlatVolumeTolerance * length_scale * length_scale * length_scale;
+  if (!std::isfinite(volume) || !std::isfinite(flat))
+    fail("mesh is too large to measure: its size (bounding-box diagonal) ", length_scale,
+         " cubed is not a finite number; check the scale and the file's units");
   if (volume < -flat)
     fail("mesh is inverted (inside out): signed volume ", volume,
          " is negative; triangles must be counter-clockwise seen from outside (flip them all)");

@@ -10,6 +10,9 @@
 #include "modify.h"
 #include "update.h"
 
+#include <cmath>
+#include <cstdio>
+
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
@@ -27,6 +30,14 @@ void FixTriNVE::init() {
   particles_ = static_cast<FixTriParticles *>(modify->find_fix_style("tri/particles", 0));
   if (!particles_)
     error->all(FLERR, "Fix tri/nve requires fix tri/particles (define it before the run)");
+  // LIGGGHTS takes any `timestep`; a step that is not a positive number turns every contact
+  // into a source of energy and moves the particles backwards out of the box.
+  if (!(update->dt > 0.0) || !std::isfinite(update->dt)) {
+    char msg[160];
+    std::snprintf(msg, sizeof msg, "Fix tri/nve: the time step must be a positive number, got %g s "
+                                   "(the timestep command)", update->dt);
+    error->all(FLERR, msg);
+  }
   reset_dt();
 }
 

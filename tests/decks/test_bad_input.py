@@ -71,6 +71,9 @@ def test_bad_input(ctx):
     make_bad_meshes(ctx.work)
     cases = {k: ("in.bad_particles", {"args": a}, p) for k, (a, p) in BAD_PARTICLES.items()}
     cases.update({k: (deck, {}, p) for k, (deck, p) in BAD_DECKS.items()})
+    for name, dt in (("zero_timestep", "0"), ("negative_timestep", "-2.5")):
+        cases[name] = ("in.bad_timestep", {"dt": dt},
+                       r"tri/nve: the time step must be a positive number, got " + dt + " s")
     expect_errors(ctx, cases)
 
 

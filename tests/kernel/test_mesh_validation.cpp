@@ -121,6 +121,13 @@ TEST(MeshValidation, NonFiniteCoordinate) {
   EXPECT_TRUE(Contains(problem(m), "vertex 6 has a non-finite coordinate (0, inf, 1)"));
 }
 
+// Coordinates that are finite but whose cube is not (a file in micrometres given `scale 1e300`):
+// the volume is inf or NaN, and the message says so instead of printing "near-zero volume nan".
+TEST(MeshValidation, MeshTooLargeToMeasure) {
+  EXPECT_TRUE(Contains(problem(box(1e120, 1e120, 1e120)), "mesh is too large to measure"));
+  EXPECT_EQ(problem(box(1e90, 1e90, 1e90)), "");
+}
+
 TEST(MeshValidation, TwoPieces) {
   tri::TriangleMesh m = box();
   const tri::TriangleMesh other = box();
