@@ -837,6 +837,17 @@ ContactPoint make_point(const std::vector<Raw> &raw, const std::vector<int> &mem
     }
     if (sum > 0.0) {
       p.point = moment / sum;
+      // The slant's share of r changes with the faces' relative tilt, not with the overlap at
+      // any point: its part of Omega's gradient is a couple about n x g (g the mean overlap
+      // slope; a turn d(theta) of a against b changes |g| by -d(theta) . (m x g^)), carried by
+      // moving the force's point along g by (dOmega/d|g|) / sum (energy kn Omega / 2, force
+      // kn sum / 2).
+      const double slope_norm = (gradient1 / area).norm();
+      if (slant > 0.0 && slope_norm > 0.0) {
+        const double d_omega_d_slope =
+            q_minus * slope * (slant / uneven_total) / (kFlatPatchBand * D) * 0.5 * layer;
+        p.point += d_omega_d_slope / sum * (gradient1 / area) / slope_norm;
+      }
       p.overlap = 0.5 * sum;
       p.energy_overlap = std::sqrt(std::max(0.0, (1.0 - b) * x_law + b * mean_square));
       const Vector3d point_normal =

@@ -119,9 +119,10 @@
 //     resting face's pressure shifting towards its low side as a real one does. Since A is fixed
 //     while a face lies flat (its whole face overlaps), dm = do(c_A), dQ = 2 m do(c_P) and
 //     dD = do(p_D) for a motion that changes the local overlap by do(x); with
-//     dr = ((k - b r) dD - k dm) / (b D)  (b = kFlatPatchBand, k = (D - m) / (r b D), 1 unless
-//     the slope term counts; the slope's own change is left out: it weighs Q - D^2, ~0 where
-//     it matters):
+//     dr = ((k - b r) dD - k dm + (1 - k^2)^(1/2) dS) / (b D)  (b = kFlatPatchBand,
+//     k = (D - m) / (r b D), 1 unless the slope term counts, S = g layer / 2; S changes with
+//     the faces' relative tilt alone, so its part is a couple, carried by moving the point
+//     along g: test TiltingNarrowPatchKeepsTheEnergy):
 //       d Omega = a_D do(p_D) + a_A do(c_A) + a_P do(c_P),
 //       a_D = 2 (1 - beta) D + (Q - D^2) beta' (k - b r) / (b D),
 //       a_A = -(Q - D^2) beta' k / (b D),     a_P = 2 beta m,
