@@ -734,6 +734,32 @@ TEST(ContactReductionPoint, FaceContactForceIsTheGradientOfItsEnergy) {
   }
 }
 
+// The one contact of a and b (kn = 1, the reduction's defaults for cells of a and b).
+ContactPoint sole_contact(const Mesh &a, const Mesh &b, double cell_a, double cell_b) {
+  const auto points = tri::reduce_contacts(contacts_by(1, a, b), soa_of(a), kEps, soa_of(b), kEps,
+                                           params_for(cell_a, cell_b));
+  EXPECT_EQ(points.size(), 1u);
+  return points.empty() ? ContactPoint{} : points[0];
+}
+
+// Along a path s from `from` to `to` (midpoint rule, 400 steps): the work of the contact's
+// force, sum of work(contact at s, ds), against minus the change of its energy
+// 1/2 energy_overlap^2 (kn = 1); expects them equal to `tolerance` of the energy change.
+template <class ContactAt, class Work>
+void expect_work_is_energy(double from, double to, ContactAt contact_at, Work work,
+                           double tolerance, const char *what) {
+  const int steps = 400;
+  double sum = 0.0;
+  for (int i = 0; i < steps; ++i) {
+    const double s0 = from + (to - from) * i / steps, s1 = from + (to - from) * (i + 1) / steps;
+    sum += work(contact_at(0.5 * (s0 + s1)), s1 - s0);
+  }
+  const double e0 = contact_at(from).energy_overlap, e1 = contact_at(to).energy_overlap;
+  const double energy_change = 0.5 * (e1 * e1 - e0 * e0);
+  std::printf("%s: work %.6e, -energy change %.6e\n", what, sum, -energy_change);
+  EXPECT_NEAR(sum, -energy_change, tolerance * std::abs(energy_change)) << what;
+}
+
 // A face 9 degrees off another (inside the polygons' 10 degrees) whose triangle reaches only a
 // sliver over the other's edge: the sliver's overlap is nearly uniform by its size alone, but
 // the faces are not flat on each other. Sliding it over the edge (the sliver growing from 5 to
@@ -748,32 +774,15 @@ TEST(ContactReductionPoint, SliverOfATiltedFaceKeepsTheEnergy) {
   // a: one rigid triangle moved along +x, its apex at x = reach over b, lower by `slope` towards
   // -x; at reach = from it is 0.7 layer above b at b's edge x = 0 (overlap 0.3 layer there, its
   // deepest), and deeper as it slides on.
-  auto state = [&](double reach, double &overlap, double &energy_overlap, Vector3d &normal) {
+  auto contact_at = [&](double reach) {
     auto at = [&](double dx, double y) {
       return Vector3d(reach + dx, y, 0.7 * kLayer + slope * (from + dx));
     };
-    const Mesh a = {Tri{{at(0, 0), at(-2e-3, -1e-3), at(-2e-3, 1e-3)}}};
-    const auto points = tri::reduce_contacts(contacts_by(1, a, b), soa_of(a), kEps, soa_of(b),
-                                             kEps, params_for(2e-3, 2e-3));
-    ASSERT_EQ(points.size(), 1u);
-    overlap = points[0].overlap;
-    energy_overlap = points[0].energy_overlap;
-    normal = points[0].normal;
+    return sole_contact({Tri{{at(0, 0), at(-2e-3, -1e-3), at(-2e-3, 1e-3)}}}, b, 2e-3, 2e-3);
   };
-  const int steps = 400;
-  double work = 0.0, o = 0.0, e0 = 0.0, e1 = 0.0;
-  Vector3d n;
-  state(from, o, e0, n);
-  state(to, o, e1, n);
-  for (int i = 0; i < steps; ++i) {
-    const double x0 = from + (to - from) * i / steps, x1 = from + (to - from) * (i + 1) / steps;
-    double unused = 0.0;
-    state(0.5 * (x0 + x1), o, unused, n);
-    work += (-o * n).x() * (x1 - x0); // the force on a (kn = 1) along its motion, +x
-  }
-  const double energy_change = 0.5 * (e1 * e1 - e0 * e0);
-  std::printf("sliver: work %.6e, -energy change %.6e\n", work, -energy_change);
-  EXPECT_NEAR(work, -energy_change, 1e-3 * std::abs(energy_change));
+  // the force on a along its motion, +x
+  auto work = [](const ContactPoint &c, double dx) { return -c.overlap * c.normal.x() * dx; };
+  expect_work_is_energy(from, to, contact_at, work, 1e-3, "sliver");
 }
 
 // A patch narrower than a layer tilting: a triangle 40 um wide lying nearly flat inside a
@@ -787,38 +796,19 @@ TEST(ContactReductionPoint, SliverOfATiltedFaceKeepsTheEnergy) {
 TEST(ContactReductionPoint, TiltingNarrowPatchKeepsTheEnergy) {
   const Mesh b = {Tri{{Vector3d(-1e-3, -1e-3, 0), Vector3d(1e-3, -1e-3, 0), Vector3d(0, 1e-3, 0)}}};
   const Vector3d corner(20e-6, 0, 0.75 * kLayer);
-  auto state = [&](double tilt, double &overlap, double &energy_overlap, Vector3d &normal,
-                   Vector3d &point) {
-    // a's triangle in its own frame (a corner at the origin, extending to -x), turned by `tilt`
-    // about y, then moved onto `corner`.
+  // a's triangle in its own frame (a corner at the origin, extending to -x), turned by `tilt`
+  // about y, then moved onto `corner`.
+  auto contact_at = [&](double tilt) {
     const Matrix3d R = Eigen::AngleAxisd(-tilt, Vector3d::UnitY()).toRotationMatrix();
     auto at = [&](double x, double y) { return Vector3d(corner + R * Vector3d(x, y, 0)); };
-    const Mesh a = {Tri{{at(0, 0), at(-40e-6, -20e-6), at(-40e-6, 20e-6)}}};
-    const auto points = tri::reduce_contacts(contacts_by(1, a, b), soa_of(a), kEps, soa_of(b),
-                                             kEps, params_for(40e-6, 2e-3));
-    ASSERT_EQ(points.size(), 1u);
-    overlap = points[0].overlap;
-    energy_overlap = points[0].energy_overlap;
-    normal = points[0].normal;
-    point = points[0].point;
+    return sole_contact({Tri{{at(0, 0), at(-40e-6, -20e-6), at(-40e-6, 20e-6)}}}, b, 40e-6, 2e-3);
   };
-  const double from = 0.2 * M_PI / 180, to = 3.0 * M_PI / 180;
-  const int steps = 400;
-  double work = 0.0, o = 0.0, e0 = 0.0, e1 = 0.0;
-  Vector3d n, p;
-  state(from, o, e0, n, p);
-  state(to, o, e1, n, p);
-  for (int i = 0; i < steps; ++i) {
-    const double t0 = from + (to - from) * i / steps, t1 = from + (to - from) * (i + 1) / steps;
-    double unused = 0.0;
-    state(0.5 * (t0 + t1), o, unused, n, p);
-    // Force on a (kn = 1) at p; a turns by -(t1 - t0) about y through `corner`.
-    const Vector3d torque = (p - corner).cross(Vector3d(-o * n));
-    work += torque.y() * -(t1 - t0);
-  }
-  const double energy_change = 0.5 * (e1 * e1 - e0 * e0);
-  std::printf("tilting narrow patch: work %.6e, -energy change %.6e\n", work, -energy_change);
-  EXPECT_NEAR(work, -energy_change, 5e-3 * std::abs(energy_change));
+  // a turns by -d(tilt) about y through `corner`, under the force's torque about it
+  auto work = [&](const ContactPoint &c, double dtilt) {
+    return (c.point - corner).cross(Vector3d(-c.overlap * c.normal)).y() * -dtilt;
+  };
+  expect_work_is_energy(0.2 * M_PI / 180, 3.0 * M_PI / 180, contact_at, work, 5e-3,
+                        "tilting narrow patch");
 }
 
 // Two closest points trading places (header, step 5): a body with two downward spikes (four
