@@ -1,6 +1,7 @@
 #include "fix_tri_wall.h"
 
 #include "fix_tri_particles.h"
+#include "incompatible_styles.h"
 
 #include "peratom_restart.h"
 #include "rigid_motion.h"
@@ -64,7 +65,10 @@ FixTriWall::FixTriWall(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg) 
       virial_flag = value == "yes";
       i += 2;
     } else if (!tri_liggghts::parse_contact_keyword(narg, arg, &i, settings_, kStyle, error)) {
-      const std::string msg = std::string(kStyle) + ": unknown keyword '" + key + "'";
+      std::string msg = tri_liggghts::gran_submodel_message(kStyle, arg[i],
+                                                            i + 1 < narg ? arg[i + 1] : nullptr);
+      if (msg.empty())
+        msg = std::string(kStyle) + ": unknown keyword '" + key + "'";
       error->all(FLERR, msg.c_str());
     }
   }
@@ -119,6 +123,9 @@ void FixTriWall::init() {
   }
   materials_.load(lmp, ntypes, settings_.interaction, settings_.model,
                   particles_->type_bodies().sphere, true, "fix tri/wall");
+  loaded_.clear();
+  for (FixMeshSurface *mesh : meshes_)
+    loaded_.push_back(mesh->trackStress());
   board_slot_ = particles_->board().join(id, tri_liggghts::SourceKind::walls);
   tri_liggghts::MaterialHint hint = materials_.hint(atom->ntypes, wall_types);
   hint.wall_epsilon = epsilon_; // < 0: the particles' default for walls
@@ -279,7 +286,8 @@ void FixTriWall::compute(bool update_history, int vflag) {
   particles_->prepare_bodies();
   const double dt = update->dt;
   tri_liggghts::ContactBoard &board = particles_->board();
-  engine_.record_contacts(evflag || board.contacts_wanted());
+  const bool loads = update_history && std::find(loaded_.begin(), loaded_.end(), 1) != loaded_.end();
+  engine_.record_contacts(evflag || board.contacts_wanted() || loads);
   engine_.run(ntasks_, nthreads,
               [&](std::size_t k, int thread) {
                 prepare(static_cast<int>(k), update_history, node_scratch_[thread]);
@@ -310,6 +318,8 @@ void FixTriWall::compute(bool update_history, int vflag) {
   if (evflag) // the particles' terms only: the wall is not an atom
     engine_.add_virial(vflag_global ? virial : nullptr, vflag_atom ? vatom : nullptr);
   publish_contacts();
+  if (loads)
+    add_wall_loads();
   particles_->board().publish(board_slot_, engine_.tally(), first);
   particles_->board().publish_deepest(board_slot_, deepest);
   seconds_ += MPI_Wtime() - start;
@@ -333,6 +343,26 @@ void FixTriWall::publish_contacts() {
     }
   }
   board.publish_contacts(board_slot_, contact_rows_);
+}
+
+void FixTriWall::add_wall_loads() {
+  for (std::size_t k = 0; k < ntasks_; ++k) {
+    const Task &task = tasks_[k];
+    if (!loaded_[task.mesh])
+      continue;
+    const double *x = atom->x[task.atom];
+    for (const tri::ContactRecord &rec : engine_.records(k)) {
+      if (rec.tri_b < 0 || rec.tri_b >= static_cast<int>(task.triangles.size()))
+        continue;
+      // LIGGGHTS takes the force on the particle and turns it round in place: a copy each time.
+      const Eigen::Vector3d on_particle = -rec.force_on_b();
+      double force[3] = {on_particle.x(), on_particle.y(), on_particle.z()};
+      double delta[3] = {rec.point.x() - x[0], rec.point.y() - x[1], rec.point.z() - x[2]};
+      double v_wall[3] = {rec.velocity_b.x(), rec.velocity_b.y(), rec.velocity_b.z()};
+      meshes_[task.mesh]->add_particle_contribution(task.atom, force, delta,
+                                                    task.triangles[rec.tri_b], v_wall);
+    }
+  }
 }
 
 /* ---------------- per-atom wall history ---------------- */

@@ -19,7 +19,10 @@
 // stress/atom, each particle's (x - p) (x) F per contact (contact_force.h Virial), where
 // LIGGGHTS asks for the virial.
 // epsilon: the wall's soft layer (m), default the particles' epsilon. Contact keywords as
-// pair tri/gran (contact_settings.h). f_ID (a global scalar) is the wall-clock time spent in
+// pair tri/gran (contact_settings.h). Wall loads: a mesh/surface with `stress on` (LIGGGHTS's
+// stress module) gets each contact point's force on the wall, on the wall triangle of its
+// deepest member, as fix wall/gran gives it (f_MESH[1..3] the total force, [4..6] the torque
+// about its reference point; the per-triangle forces for dump mesh/vtk). f_ID (a global scalar) is the wall-clock time spent in
 // this fix, for a run's time breakdown. The tangential history of each (particle, mesh) pair,
 // and its last proven separating axis (a particle that touches no wall triangle near it costs
 // O(vertices)), are a per-atom array of this fix: migrated with the atom and written to
@@ -72,6 +75,7 @@ private:
   };
   std::vector<class FixMeshSurface *> meshes_;
   std::vector<std::string> mesh_ids_;
+  std::vector<char> loaded_; // per mesh: tracks its stress (wall loads wanted); from init
   class FixTriParticles *particles_ = nullptr;
   tri_liggghts::ContactSettings settings_;
   tri_liggghts::MaterialTable materials_;
@@ -103,6 +107,7 @@ private:
   void compute(bool update_history, int vflag);
   // The step's contact records on the board, where a contact output wants them.
   void publish_contacts();
+  void add_wall_loads();
   void collect_tasks();
   // A task's kept state (candidates, the atom's history and axis for this mesh) lies wherever
   // its entry and atom are: asked for kPrefetchAhead tasks ahead, as pair tri/gran does, it

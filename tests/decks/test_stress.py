@@ -127,3 +127,25 @@ def test_stress_threads_and_ranks(ctx):
             d = abs(float(serial[tag][k]) - float(split[tag][k]))
             check(d <= 1e-10 * scale, f"atom {tag} column {k + 1}: 1 rank {serial[tag][k]}, "
                   f"2 ranks {split[tag][k]}")
+
+
+def test_wall_loads_carry_the_weight(ctx):
+    """Wall loads: a stack of two cubes at rest at (x0, y0) = (3, -2) mm on a
+    mesh/surface/stress plane presses on it with its weight, f_plane[3] = -W within 1e-3, no
+    sideways force, and its torque about the origin is that of -W at the stack's axis,
+    f_plane[4..6] = (y0 Fz, -x0 Fz, 0) within 1e-3 of W x0."""
+    make_contact_meshes(ctx.work)
+    x0, y0 = 0.003, -0.002
+    _, out = run_deck(ctx, "in.wall_loads", {"x0": x0, "y0": y0, "nsteps": 3000})
+    row = final_row(out)
+    weight = 2 * CUBE_MASS * G
+    f = [row[f"plane[{k}]"] for k in (1, 2, 3)]
+    t = [row[f"plane[{k}]"] for k in (4, 5, 6)]
+    print(f"force on the plane {f} N (weight {weight:.6e}), torque {t} N m")
+    check(abs(f[2] / -weight - 1) < 1e-3, f"f_plane[3] = {f[2]:g}, expected -W = {-weight:g}")
+    check(max(abs(f[0]), abs(f[1])) < 1e-6 * weight, f"sideways force {f[:2]} on a flat plane")
+    expected = [y0 * f[2], -x0 * f[2], 0.0]
+    for k in range(3):
+        check(abs(t[k] - expected[k]) < 1e-3 * weight * x0,
+              f"f_plane[{k + 4}] = {t[k]:g}, expected {expected[k]:g} (the weight at the "
+              "stack's axis)")
