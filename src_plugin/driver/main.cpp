@@ -1,7 +1,7 @@
 // liggghts-tri: Debian's LIGGGHTS with the triangulated-particle styles registered.
 // It takes exactly liggghts's command line and runs the input the same way; the differences
-// are register_styles() between constructing LAMMPS and reading the input, and `-screen none`
-// (below).
+// are the styles, registered as LIGGGHTS builds its style maps (post_create.cpp, also after
+// `clear`), LIGGGHTS's error paths (error_output.cpp), and `-screen none` (below).
 #include "style_registry.h"
 
 #include "input.h"
@@ -80,8 +80,8 @@ int main(int argc, char **argv) {
   }
 
   std::vector<char *> args = screen_none_to_null(argc, argv);
+  // The styles register themselves as the instance is built (post_create.cpp).
   auto *lammps = new LAMMPS_NS::LAMMPS(argc, args.data(), MPI_COMM_WORLD);
-  tri_driver::register_styles(*lammps);
   lammps->input->file();
   delete lammps;
 

@@ -105,6 +105,20 @@ void ContactBoard::clear_sources() {
   adaptive_dt_ = false;
 }
 
+void ContactBoard::end_run() {
+  previous_ = {contacts_wanted_, sources_, particle_pairs_, adaptive_dt_, dtmin_, dtmax_};
+  clear_sources();
+}
+
+void ContactBoard::restore_membership() {
+  contacts_wanted_ = previous_.contacts_wanted;
+  sources_ = previous_.sources;
+  particle_pairs_ = previous_.particle_pairs;
+  adaptive_dt_ = previous_.adaptive_dt;
+  dtmin_ = previous_.dtmin;
+  dtmax_ = previous_.dtmax;
+}
+
 int ContactBoard::sources(SourceKind kind) const {
   int n = 0;
   for (const Source &s : sources_)

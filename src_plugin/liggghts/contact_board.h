@@ -10,7 +10,8 @@
 // `epsilon auto` and to check the time step (material_scales.h); fix tri/adapt_dt publishes
 // the range of its time step. Fix tri/particles clears every tally before each force
 // evaluation (pre_force) and the membership after each run (post_run), so a style removed
-// between runs (unfix, a new pair_style) leaves nothing behind.
+// between runs (unfix, a new pair_style) leaves nothing behind; a run with `pre no` (no init)
+// takes the last run's membership back.
 // Local to this rank: the cross-rank sums are step_tally.h's.
 // LIGGGHTS-free (NeighList is only pointed to), so it is tested alone.
 #pragma once
@@ -109,6 +110,11 @@ public:
 
   void clear_tallies();
   void clear_sources();
+  // After a run: the membership is set aside and cleared (the next init's sources join anew).
+  // A run with `pre no` skips every init, so nobody joins: restore_membership() takes back
+  // the last run's sources, slots and flags.
+  void end_run();
+  void restore_membership();
 
   int sources(SourceKind kind) const;
   tri::InteractionTally local(TallySource which) const; // this rank, summed over the sources
@@ -144,6 +150,13 @@ private:
   FastestPair fastest_pair_;
   bool adaptive_dt_ = false;
   double dtmin_ = 0.0, dtmax_ = 0.0;
+  struct Membership {
+    bool contacts_wanted = false;
+    std::vector<Source> sources;
+    const LAMMPS_NS::NeighList *particle_pairs = nullptr;
+    bool adaptive_dt = false;
+    double dtmin = 0.0, dtmax = 0.0;
+  } previous_;
 };
 
 } // namespace tri_liggghts

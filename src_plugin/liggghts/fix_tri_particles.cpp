@@ -119,8 +119,11 @@ void FixTriParticles::end_of_step() {
 }
 
 // A source removed between runs (unfix, another pair_style) leaves nothing behind; the
-// sources of the next run join again in their init().
-void FixTriParticles::post_run() { board_.clear_sources(); }
+// sources of the next run join again in their init(), unless it runs with `pre no`.
+void FixTriParticles::post_run() {
+  board_.end_run();
+  initialised_since_run_ = false;
+}
 
 void FixTriParticles::initialise_atom(int i, int shape) {
   const auto tag = static_cast<std::uint64_t>(atom->tag[i]);
@@ -170,11 +173,36 @@ void FixTriParticles::apply_mass_and_radius(int i) {
 }
 
 void FixTriParticles::init() {
+  initialised_since_run_ = true;
+  tri_liggghts::check_insertion(lmp, *this); // names the distribution of a refused template
   tri_liggghts::refuse_incompatible_styles(lmp, id);
-  tri_liggghts::check_insertion(lmp, *this);
+  tri_liggghts::mend_output_frequencies(lmp);
+  warn_of_changed_radii();
   initialise_unset_atoms();
   for (int i = 0; i < atom->nlocal; ++i)
     apply_mass_and_radius(i);
+}
+
+// `set diameter|mass|density`, read_dump's radius and the like change what this fix owns; the
+// next run resets it, and says so rather than run silently on other values than the deck gave.
+void FixTriParticles::warn_of_changed_radii() {
+  long changed = 0;
+  for (int i = 0; i < atom->nlocal; ++i) {
+    if (state_[i][kShape] == kUnset)
+      continue;
+    const tri::Shape &s = shapes_[shape_index(i)];
+    changed += atom->radius[i] != tri::contact_reach(s, epsilon_) ||
+               atom->rmass[i] != density_ * s.volume;
+  }
+  long total = 0;
+  MPI_Allreduce(&changed, &total, 1, MPI_LONG, MPI_SUM, world);
+  if (total > 0 && comm->me == 0) {
+    const std::string msg =
+        "Fix tri/particles: " + std::to_string(total) +
+        " particle(s) had their radius or mass changed since the last run (set diameter, mass "
+        "or density, read_dump, ...): reset to their shape's contact reach and mass";
+    error->warning(FLERR, msg.c_str());
+  }
 }
 
 void FixTriParticles::setup_pre_force(int) {
@@ -209,7 +237,19 @@ void FixTriParticles::resolve_epsilon() {
       tri_liggghts::choose_auto_epsilon(lmp, board_, type_bodies());
   if (!chosen.found || (epsilon_resolved_ && !(chosen.epsilon > epsilon_)))
     return;
-  epsilon_ = chosen.epsilon;
+  char line[600];
+  std::snprintf(line, sizeof line,
+                "tri/particles: epsilon auto = %g m (peak overlap v sqrt(meff / kn) of a "
+                "head-on contact at the characteristic velocity %g m/s: %s, types %d and %d%s, "
+                "meff %g kg, kn %g N/m, gives %g m = %g of the two soft layers)\n",
+                chosen.epsilon, chosen.speed, chosen.source.c_str(), chosen.itype, chosen.jtype,
+                chosen.wall ? " (wall)" : "", chosen.meff, chosen.kn, chosen.overlap,
+                tri::kAutoEpsilonFraction);
+  adopt_epsilon(chosen.epsilon, line);
+}
+
+void FixTriParticles::adopt_epsilon(double epsilon, const char *line) {
+  epsilon_ = epsilon;
   epsilon_resolved_ = true;
   monitor_->set_epsilon(epsilon_);
   set_soft_layers();
@@ -218,14 +258,6 @@ void FixTriParticles::resolve_epsilon() {
     if (state_[i][kShape] != kUnset)
       apply_mass_and_radius(i);
   if (comm->me == 0) {
-    char line[600];
-    std::snprintf(line, sizeof line,
-                  "tri/particles: epsilon auto = %g m (peak overlap v sqrt(meff / kn) of a "
-                  "head-on contact at the characteristic velocity %g m/s: %s, types %d and %d%s, "
-                  "meff %g kg, kn %g N/m, gives %g m = %g of the two soft layers)\n",
-                  epsilon_, chosen.speed, chosen.source.c_str(), chosen.itype, chosen.jtype,
-                  chosen.wall ? " (wall)" : "", chosen.meff, chosen.kn, chosen.overlap,
-                  tri::kAutoEpsilonFraction);
     if (screen)
       std::fputs(line, screen);
     if (logfile)
@@ -251,6 +283,10 @@ void FixTriParticles::given_surface(int i, tri::TriangleSoA &out) const {
 }
 
 void FixTriParticles::pre_force(int) {
+  if (!initialised_since_run_) { // `run N pre no` skips init and setup: nobody joined again
+    board_.restore_membership();
+    initialised_since_run_ = true;
+  }
   // Atoms inserted during a run (fix insert/pour) arrive unset; their tags exist by now.
   initialise_unset_atoms();
   comm->forward_comm_fix(this);
@@ -489,9 +525,15 @@ void FixTriParticles::write_restart(FILE *fp) {
 void FixTriParticles::restart(char *buf) {
   monitor_->skip_initial_check();
   std::string msg;
+  tri_liggghts::ParticlesRecord file;
   try {
+    file = tri_liggghts::decode(buf);
+    // `epsilon auto` is not resolved yet (no material has been published): the run goes on
+    // with the layer it had, and the rest of the deck must match.
+    const bool inherit = epsilon_auto_ && !epsilon_resolved_;
     const std::string d = tri_liggghts::differences(
-        tri_liggghts::decode(buf), tri_liggghts::make_record(shapes_, epsilon_, density_, layer_inside_));
+        file, tri_liggghts::make_record(shapes_, inherit ? file.epsilon : epsilon_, density_,
+                                        layer_inside_));
     if (!d.empty())
       msg = "Fix tri/particles: this deck differs from the run that wrote the restart file: " + d;
   } catch (const std::runtime_error &e) {
@@ -499,6 +541,13 @@ void FixTriParticles::restart(char *buf) {
   }
   if (!msg.empty())
     error->all(FLERR, msg.c_str());
+  if (epsilon_auto_ && !epsilon_resolved_) {
+    char line[200];
+    std::snprintf(line, sizeof line,
+                  "tri/particles: epsilon auto = %g m, as in the restart file\n", file.epsilon);
+    adopt_epsilon(file.epsilon, line);
+    run_started_ = true; // fixed: the materials of this deck do not widen it
+  }
 }
 
 double FixTriParticles::max_rad(int type) {

@@ -197,6 +197,7 @@ private:
   bool epsilon_auto_ = false, epsilon_resolved_ = false;
   bool layer_inside_ = true;
   bool run_started_ = false; // epsilon auto is fixed once the first run has started
+  bool initialised_since_run_ = false; // init() since the last run (false: `run N pre no`)
   int check_timestep_every_ = 0; // -1 off, 0 at setup, N: also every N steps
   bool assign_by_type_ = false, orient_random_ = false, orient_file_ = false;
   std::vector<std::pair<std::string, int>> templates_; // `template ID SHAPE`, shape index
@@ -215,6 +216,10 @@ private:
   // Each shape's kernel surface for the current epsilon (tri::with_soft_layer); an ERROR naming
   // the shape when the layer does not fit it.
   void set_soft_layers();
+  // epsilon_ := epsilon, resolved: the soft layers, the shapes' check, radii and masses follow;
+  // `line` is printed (rank 0) to say where it came from.
+  void adopt_epsilon(double epsilon, const char *line);
+  void warn_of_changed_radii();
 };
 
 } // namespace LAMMPS_NS

@@ -1,6 +1,7 @@
 #include "pair_tri_gran.h"
 
 #include "fix_tri_particles.h"
+#include "incompatible_styles.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -29,7 +30,10 @@ PairTriGran::PairTriGran(LAMMPS *lmp) : PairGran(lmp) {
 void PairTriGran::settings(int narg, char **arg) {
   for (int i = 0; i < narg;) {
     if (!tri_liggghts::parse_contact_keyword(narg, arg, &i, settings_, kStyle, error)) {
-      const std::string msg = std::string(kStyle) + ": unknown keyword '" + arg[i] + "'";
+      std::string msg =
+          tri_liggghts::gran_submodel_message(kStyle, arg[i], i + 1 < narg ? arg[i + 1] : nullptr);
+      if (msg.empty())
+        msg = std::string(kStyle) + ": unknown keyword '" + arg[i] + "'";
       error->all(FLERR, msg.c_str());
     }
   }

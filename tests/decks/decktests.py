@@ -9,7 +9,7 @@ registered by being written. Standard library only.
   decktests.py --check NAME...      fails unless NAME... (the names CMake registered) are
                                     exactly the tests discovered now
   decktests.py NAME --exe LIGGGHTS_TRI --work DIR [--vtkdump PATH] [--stats-columns PATH]
-                    [--liggghts PATH]
+                    [--liggghts PATH] [--style-matrix PATH]
 """
 import argparse
 import ast
@@ -27,7 +27,7 @@ import decklib  # noqa: E402
 
 # The modules here that hold no tests. Any other .py must be a test module, test_*.py: a
 # script in the old style (main() and its own CTest line) would otherwise never run.
-HELPERS = ("decklib", "decktests")
+HELPERS = ("decklib", "decktests", "style_decks")
 
 
 def modules():
@@ -97,6 +97,7 @@ def main():
     ap.add_argument("--vtkdump")
     ap.add_argument("--stats-columns", help="tri-stats-columns: the columns of compute tri/stats")
     ap.add_argument("--liggghts", help="LIGGGHTS's own executable")
+    ap.add_argument("--style-matrix", help="tri-style-matrix: every LIGGGHTS style, classified")
     ctx = ap.parse_args()
     problems = lint()
     if problems:

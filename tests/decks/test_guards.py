@@ -62,7 +62,7 @@ CASES = {
         r"fix wall/gran \(ID granwalls\).*use fix tri/wall"),
     "pair_gran": ("pair_style gran model hooke/stiffness tangential history\npair_coeff * *\n"
                   + WALL + NVE,
-                  r"pair_style gran cannot work.*spheres of the bounding radius.*use pair_style "
+                  r"pair_style gran cannot work.*spheres of the contact reach.*use pair_style "
                   r"tri/gran model hooke\|hertz\|hooke/stiffness \(the same fix property/global "
                   r"materials as pair gran\)"),
     "pair_hybrid": ("pair_style hybrid/overlay tri/gran soft 0.001\npair_coeff * * tri/gran\n"

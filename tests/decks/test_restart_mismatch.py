@@ -7,7 +7,8 @@ import os
 import re
 import struct
 
-from decklib import Failure, check, expect_error, run_deck
+from decklib import Failure, check, expect_error, last_frame, run_deck
+from style_decks import BASE, PAIR, resumed_base, write_files
 
 ROCK20 = "shape rock20 random ntri 20 size 0.004 seed 7"
 ROCK40 = "shape rock40 random ntri 40 size 0.004 seed 8"
@@ -175,3 +176,32 @@ def test_restart_mismatch(ctx):
             failures.append(f"{name}: {e}")
     check(not failures, "\n".join(failures))
     print(f"{len(CASES)} differences named, the same deck continues")
+
+
+def test_restart_with_epsilon_auto(ctx):
+    """A deck with `epsilon auto` (the default) continues from its restart file: the restart
+    keeps the layer the run resolved (and says so), and 10 steps after it give the bits of one
+    run of 20 steps."""
+    base = BASE.format(atom_style="sphere", pair_style=PAIR)
+    check("epsilon" not in base, "the base deck gives an epsilon: it must leave it to auto")
+    dump = ("dump d all custom 10 {name}.dump id x y z vx vy vz omegax omegay omegaz "
+            "f_shapes[1] f_shapes[2] f_shapes[3] f_shapes[4]\n"
+            "dump_modify d sort id format \"%d" + " %.17g" * 13 + "\"\n")
+    resumed = resumed_base("s.restart")
+    decks = {"in.whole": base + dump.format(name="whole") + "run 20\n",
+             "in.first": base + "run 10\nwrite_restart s.restart\n",
+             "in.resumed": resumed + dump.format(name="resumed") + "run 10\n"}
+    write_files(ctx.work)
+    outputs = {}
+    for name, text in decks.items():
+        with open(os.path.join(ctx.work, name), "w") as f:
+            f.write(text)
+        _, outputs[name] = run_deck(ctx, os.path.join(ctx.work, name))
+    eps = re.findall(r"epsilon auto = (\S+) m", outputs["in.first"])
+    check(eps, "the first run printed no 'epsilon auto'")
+    check(f"epsilon auto = {eps[-1]} m, as in the restart file" in outputs["in.resumed"],
+          f"the resumed run did not take epsilon {eps[-1]} from the restart file")
+    whole = last_frame(os.path.join(ctx.work, "whole.dump"))
+    again = last_frame(os.path.join(ctx.work, "resumed.dump"))
+    check(whole[0] == again[0] == 20, f"last frames at steps {whole[0]} and {again[0]}")
+    check(whole[1] == again[1], "the resumed run differs from the whole one at step 20")

@@ -60,3 +60,24 @@ TEST(ContactBoard, ClearingTalliesKeepsSourcesAndClearingSourcesForgetsThem) {
   EXPECT_EQ(board.particle_pairs(), nullptr);
   EXPECT_THROW(board.publish(pair, tally(1, 0, 0), {}), std::out_of_range);
 }
+
+TEST(ContactBoard, ARunWithoutInitTakesTheLastRunsMembershipBack) {
+  ContactBoard board;
+  const int pair = board.join("pair", SourceKind::particle_pairs);
+  const int wall = board.join("wall", SourceKind::walls);
+  board.want_contacts();
+  board.publish_adaptive_dt(1e-6, 1e-4);
+  board.end_run(); // post_run: the next init's sources join anew
+  EXPECT_EQ(board.sources(SourceKind::walls), 0);
+  EXPECT_FALSE(board.contacts_wanted());
+  board.restore_membership(); // `run N pre no`: nobody joined
+  EXPECT_EQ(board.sources(SourceKind::particle_pairs), 1);
+  EXPECT_EQ(board.sources(SourceKind::walls), 1);
+  EXPECT_TRUE(board.contacts_wanted());
+  EXPECT_TRUE(board.adaptive_dt());
+  EXPECT_EQ(board.dtmax(), 1e-4);
+  board.publish(wall, tally(3, 1, 2e-5), {7, 0}); // the slots are those of the last run
+  board.publish(pair, tally(5, 2, 1e-5), {});
+  EXPECT_EQ(board.local(TallySource::wall).contacts_after, 3);
+  EXPECT_EQ(board.local(TallySource::pair).contacts_after, 5);
+}
