@@ -54,8 +54,16 @@ FixTriParticles::FixTriParticles(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, n
   if (igroup != group->find("all"))
     error->all(FLERR, "Fix tri/particles must be applied to group all: every atom is a "
                       "triangulated particle");
-  if (modify->find_fix_style("tri/particles", 0))
-    error->all(FLERR, "Only one fix tri/particles may be defined");
+  // LIGGGHTS replaces a fix defined again under its ID: it deletes the old one and leaves its
+  // slot empty while this one is built. The particles' shapes, orientations and angular
+  // momenta would go with it.
+  for (int k = 0; k < modify->nfix; ++k) {
+    if (!modify->fix[k])
+      error->all(FLERR, "Fix tri/particles cannot be defined again: the particles' shapes, "
+                        "orientations and angular momenta belong to its first definition");
+    if (std::strcmp(modify->fix[k]->style, "tri/particles") == 0)
+      error->all(FLERR, "Only one fix tri/particles may be defined");
+  }
 
   const tri_liggghts::ParticleOptions opt = tri_liggghts::parse_particle_options(narg, arg, 3, error);
   density_ = opt.density;

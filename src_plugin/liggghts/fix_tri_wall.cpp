@@ -113,6 +113,16 @@ void FixTriWall::init() {
   particles_ = static_cast<FixTriParticles *>(modify->find_fix_style("tri/particles", 0));
   if (!particles_)
     error->all(FLERR, "Fix tri/wall requires fix tri/particles (define it before the run)");
+  // The meshes' neighbour lists were made for this fix when it was created (post_create); a
+  // mesh defined again since (possibly at the old address) has none.
+  for (std::size_t m = 0; m < meshes_.size(); ++m)
+    if (modify->find_fix_id(mesh_ids_[m].c_str()) != meshes_[m] ||
+        !meshes_[m]->hasNeighList()) {
+      const std::string msg = std::string(kStyle) + " " + id + ": mesh '" + mesh_ids_[m] +
+                              "' was removed or defined again after this fix (unfix the wall "
+                              "too, and define it again after the mesh)";
+      error->all(FLERR, msg.c_str());
+    }
   // Material of (particle type, wall type): LIGGGHTS sizes the property tables by the
   // largest type of atoms and meshes alike.
   int ntypes = atom->ntypes;

@@ -384,3 +384,32 @@ SNIPPETS = {
  "pair gran surface multicontact": {"pair_style": "tri/gran model hooke surface multicontact"},
  "pair gran surface superquadric": {"pair_style": "tri/gran model hooke surface superquadric"},
 }
+
+# Decks that take the plugin's styles apart between runs, as a deck may: each must run or stop
+# with the ERROR given (a part of its text), never end in a signal.
+SEQUENCES = {
+    "unfix the particles": ("run 5\nunfix shapes\nrun 5", "requires fix tri/particles"),
+    "define the particles again": (
+        "run 5\nfix shapes all tri/particles shape r random ntri 20 size 0.004 seed 2 "
+        "density 2500\nrun 5", "cannot be defined again"),
+    "a second fix tri/particles": (
+        "fix shapes2 all tri/particles shape r random ntri 20 size 0.004 seed 2 density 2500\n"
+        "run 5", "Only one fix tri/particles"),
+    "unfix a wall's mesh": ("run 5\nunfix cad\nrun 5", "mesh 'cad' was removed"),
+    "define a wall's mesh again": ("run 5\nfix cad all mesh/surface file plane.stl type 1\nrun 5",
+                                   "ERROR"),
+    "unfix a wall and its mesh": ("run 5\nunfix walls\nunfix cad\nrun 5", None),
+    "unfix the integrator": ("run 5\nunfix integr\nrun 5", None),
+    "define the wall again": ("run 5\nfix walls all tri/wall model hooke mesh cad\nrun 5", None),
+    "define the integrator again": ("run 5\nfix integr all tri/nve\nrun 5", None),
+    "no pair style": ("run 5\npair_style none\nrun 5", None),
+    "another pair model": ("run 5\npair_style tri/gran model hertz\npair_coeff * *\nrun 5", None),
+    "delete every particle": ("run 5\ndelete_atoms group all\nrun 5", None),
+    "delete some particles": ("run 5\ngroup low id <= 5\ndelete_atoms group low\nrun 5", None),
+    "integrators by group": ("group low id <= 5\ngroup high id > 5\nunfix integr\n"
+                             "fix i1 low tri/nve\nfix i2 high tri/nve\nrun 5", None),
+    "a new time step": ("run 5\ntimestep 2e-5\nrun 5", None),
+    "runs of no steps": ("run 0\nrun 0\nrun 5", None),
+    "a box made larger": ("run 5\nchange_box all x final -0.015 0.015 remap units box\nrun 5", None),
+    "a box made closed": ("run 5\nchange_box all boundary f f f\nrun 5", None),
+}

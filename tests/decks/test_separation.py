@@ -1,10 +1,10 @@
-"""Kept separating axes, kept candidates and the tight cull (issue 12) change no trajectory. in.separation: 27
+"""Kept separating axes, kept candidates and the tight cull change no trajectory. in.separation: 27
 spinning rocks thrown into an open box (flights, rock-rock and rock-wall contacts, a forming
 pile). The default contact settings (kept separating axes and gaps, the travel proof, kept
 triangle-pair candidates, cull in two frames and face planes) must give bit for bit the final positions, velocities, spins, forces and orientations of
 
   * `separation no coherence no cull boxes` (every pair searched, world-frame boxes only: the
-    search before issue 12), for pair tri/gran and fix tri/wall alike;
+    plain search), for pair tri/gran and fix tri/wall alike;
   * 2 OpenMP threads, 2 MPI ranks, and N steps + write_restart + N steps from the file (the
     axes travel in LIGGGHTS's contact history and in the wall fix's per-atom array);
 

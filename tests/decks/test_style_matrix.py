@@ -14,7 +14,7 @@ import re
 import subprocess
 
 from decklib import CRASH_WORDS, Failure, check, run, snapshots
-from style_decks import BASE, PAIR, SNIPPETS, deck_text, write_files
+from style_decks import BASE, PAIR, SEQUENCES, SNIPPETS, deck_text, write_files
 
 SECTIONS = {  # `liggghts -h` section title -> the matrix's kind
     "Atom styles": "atom_style", "Integrate styles": "run_style", "Pair styles": "pair_style",
@@ -186,3 +186,27 @@ def test_set_diameter_is_reset_with_a_warning(ctx):
     (before_step, before), (last_step, last) = frames[1], frames[-1]
     check(before_step == 5 and last_step == 10, f"frames at {[f[0] for f in frames]}")
     check(last == before, "the radii and masses after the reset are not the shapes'")
+
+
+def test_decks_that_take_the_styles_apart(ctx):
+    """unfix, a fix defined again, pair_style none, deleted particles, a changed box, between
+    runs (style_decks.SEQUENCES): each deck runs, or stops with the ERROR it names."""
+    base = BASE.format(atom_style="sphere", pair_style=PAIR)
+    bad = []
+    for name, (lines, error) in SEQUENCES.items():
+        folder = os.path.join(ctx.work, re.sub(r"\W+", "_", name))
+        os.makedirs(folder, exist_ok=True)
+        write_files(folder)
+        with open(os.path.join(folder, "in.deck"), "w") as f:
+            f.write(base + lines + "\n")
+        code, out = run([ctx.exe, "-in", "in.deck"], folder, timeout=120)
+        errors = [l for l in out.splitlines() if l.startswith("ERROR")]
+        if code < 0 or any(w in out for w in CRASH_WORDS):
+            bad.append(f"{name}: a signal (exit {code}):\n{out[-800:]}")
+        elif error is None and (code != 0 or errors):
+            bad.append(f"{name}: should run, got exit {code} {errors}")
+        elif error is not None and not (code != 0 and errors and error in errors[0]):
+            bad.append(f"{name}: should stop with an ERROR containing {error!r}, got exit "
+                       f"{code} {errors}")
+    check(not bad, "\n".join(bad))
+    print(f"{len(SEQUENCES)} decks, each as expected")

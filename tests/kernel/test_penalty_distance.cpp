@@ -183,7 +183,7 @@ TEST(PenaltyDistance, ResumedStepsGiveTheLongerRunsBits) {
 // reports the pair as touching (distance 0, within kTouchRatio x the longest edge), while the
 // penalty's lower bound, a separating-axis gap valid for any axis, is 1.25e-9 > 0. Both are
 // right: a touching pair's true distance may be up to the touch tolerance, so the bound may be
-// too, and no further (the fuzz check allowed only rounding above 0 until session 21).
+// too, and no further (a check that allows only rounding above 0 is wrong for such pairs).
 TEST(PenaltyDistance, LowerBoundOfATouchingPairStaysWithinTheTouchTolerance) {
   const Eigen::Vector3d a[3] = {{0.244140625, 0, -905.09033203125},
                                 {371.64306640625, -765.350341796875, 108.306884765625},

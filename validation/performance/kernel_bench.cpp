@@ -312,7 +312,8 @@ int main(int argc, char **argv) {
       }
   omp_set_num_threads(1);
 
-  // Floors of issue 3, as ratios within this run, and the reference code's figures.
+  // The speed floors the kernel must keep, as ratios within this run, and the reference
+  // code's figures.
   const Figure &bf_scalar = figures["40brute force scalar"];
   const Figure &hybrid_nocull = figures["40hybrid"];
   const Figure &hybrid_cull = figures["40hybrid cull"];
