@@ -210,3 +210,31 @@ def test_decks_that_take_the_styles_apart(ctx):
                        f"{code} {errors}")
     check(not bad, "\n".join(bad))
     print(f"{len(SEQUENCES)} decks, each as expected")
+
+
+def test_massflow_counts_the_particles_whose_centres_cross(ctx):
+    """fix massflow/mesh beside mesh particles: the 9 rocks of the upper layer, sent down
+    through a plane mesh at z = 6.5 mm, are counted once each, with their meshes' mass: the
+    count and mass of the particles that started above the plane and end below it."""
+    base = BASE.format(atom_style="sphere", pair_style=PAIR)
+    out = run_text(ctx, "in.massflow", base + """\
+region above block INF INF INF INF 0.0065 INF units box
+region below block INF INF INF INF INF 0.0065 units box
+group top region above
+velocity all set 0 0 -0.5
+fix sm all mesh/surface file flow.stl type 1
+fix s all massflow/mesh mesh sm vec_side 0 0 -1 count once
+variable crossed equal count(top,below)
+variable mcrossed equal mass(top,below)
+thermo_style custom step f_s[1] f_s[2] v_crossed v_mcrossed
+thermo_modify format float %.17g
+thermo 100
+run 400
+""")
+    rows = [l.split() for l in out.splitlines() if l.split()[:1] == ["400"]]
+    check(rows, f"no thermo row at step 400:\n{out[-1500:]}")
+    mass, count, crossed, mcrossed = (float(w) for w in rows[-1][1:5])
+    print(f"massflow/mesh: {count:g} particles, {mass:.6e} kg; crossed: {crossed:g}, "
+          f"{mcrossed:.6e} kg")
+    check(crossed == 9 and count == crossed, f"counted {count:g}, crossed {crossed:g} (of 9)")
+    check(abs(mass - mcrossed) <= 1e-12 * mcrossed, f"mass {mass:g} kg, crossed {mcrossed:g} kg")
