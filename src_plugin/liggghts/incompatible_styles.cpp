@@ -32,8 +32,9 @@ const StyleRow *refused(StyleKind kind, const char *style) {
 // The replacement as the row gives it, with f_ID (the fix tri/particles' columns) named.
 std::string instead(const StyleRow &row, const std::string &particles_id) {
   std::string use = row.instead;
-  for (std::size_t at; (at = use.find("f_ID")) != std::string::npos;)
-    use.replace(at, 4, "f_" + particles_id);
+  const std::string name = "f_" + particles_id;
+  for (std::size_t at = 0; (at = use.find("f_ID", at)) != std::string::npos; at += name.size())
+    use.replace(at, 4, name);
   return use;
 }
 

@@ -57,15 +57,21 @@ def matrix(ctx):
     return rows
 
 
-def outcome(ctx, key):
-    """(status, detail) of the style's deck: status RUNS, ERROR, SIGNAL, HANG or NAN."""
-    work = os.path.join(ctx.work, re.sub(r"\W+", "_", key))
+def run_in_folder(ctx, name, text):
+    """Runs deck `text` in its own folder ctx.work/NAME (with the files style_decks writes);
+    returns (exit code, screen output)."""
+    work = os.path.join(ctx.work, re.sub(r"\W+", "_", name))
     os.makedirs(work, exist_ok=True)
     write_files(work)
     with open(os.path.join(work, "in.deck"), "w") as f:
-        f.write(deck_text(key))
+        f.write(text)
+    return run([ctx.exe, "-in", "in.deck"], work, timeout=120)
+
+
+def outcome(ctx, key):
+    """(status, detail) of the style's deck: status RUNS, ERROR, SIGNAL, HANG or NAN."""
     try:
-        code, out = run([ctx.exe, "-in", "in.deck"], work, timeout=120)
+        code, out = run_in_folder(ctx, key, deck_text(key))
     except Failure as e:
         return "HANG", str(e)
     errors = [l.strip() for l in out.splitlines() if l.startswith("ERROR")]
@@ -145,11 +151,9 @@ def test_style_matrix_irrelevant(ctx):
 
 
 def run_text(ctx, name, text):
-    """Runs deck `text` as ctx.work/name (with the base deck's files); returns its output."""
-    write_files(ctx.work)
-    with open(os.path.join(ctx.work, name), "w") as f:
-        f.write(text)
-    code, out = run([ctx.exe, "-in", name], ctx.work, timeout=120)
+    """Runs deck `text` (run_in_folder) that must run without an ERROR; returns its output and
+    leaves its files in ctx.work/NAME."""
+    code, out = run_in_folder(ctx, name, text)
     check(code == 0 and "ERROR" not in out, f"{name} exited {code}:\n{out[-2000:]}")
     return out
 
@@ -182,7 +186,7 @@ def test_set_diameter_is_reset_with_a_warning(ctx):
     out = run_text(ctx, "in.set", base + dump + "run 5\nset group all diameter 0.001\nrun 5\n")
     check(out.count("WARNING") == 1 and "18 particle(s) had their radius or mass changed" in out,
           f"no (or more than one) warning of the changed radii:\n{out[-2000:]}")
-    frames = snapshots(os.path.join(ctx.work, "radius.dump"))
+    frames = snapshots(os.path.join(ctx.work, "in_set", "radius.dump"))
     (before_step, before), (last_step, last) = frames[1], frames[-1]
     check(before_step == 5 and last_step == 10, f"frames at {[f[0] for f in frames]}")
     check(last == before, "the radii and masses after the reset are not the shapes'")
@@ -194,12 +198,7 @@ def test_decks_that_take_the_styles_apart(ctx):
     base = BASE.format(atom_style="sphere", pair_style=PAIR)
     bad = []
     for name, (lines, error) in SEQUENCES.items():
-        folder = os.path.join(ctx.work, re.sub(r"\W+", "_", name))
-        os.makedirs(folder, exist_ok=True)
-        write_files(folder)
-        with open(os.path.join(folder, "in.deck"), "w") as f:
-            f.write(base + lines + "\n")
-        code, out = run([ctx.exe, "-in", "in.deck"], folder, timeout=120)
+        code, out = run_in_folder(ctx, name, base + lines + "\n")
         errors = [l for l in out.splitlines() if l.startswith("ERROR")]
         if code < 0 or any(w in out for w in CRASH_WORDS):
             bad.append(f"{name}: a signal (exit {code}):\n{out[-800:]}")
