@@ -18,6 +18,7 @@
 #include "group.h"
 #include "memory.h"
 #include "modify.h"
+#include "output.h"
 #include "update.h"
 
 #include <algorithm>
@@ -124,6 +125,20 @@ void FixTriParticles::end_of_step() {
   monitor_->end_of_step(board_);
   if (check_timestep_every_ > 0 && update->ntimestep % check_timestep_every_ == 0)
     tri_liggghts::check_timestep(lmp, board_, type_bodies(), epsilon_, default_wall_layer(), false);
+  if (output->restart_requested(update->ntimestep)) // a restart file is written this step
+    bring_contact_history_up_to_date();
+}
+
+// LIGGGHTS keeps pair tri/gran's contact history in the neighbour list between neighbour
+// builds and copies it to the atoms (which a restart file stores) only before each build and
+// in write_restart. A restart file written during a run (`restart N`) would get the history of
+// the last build; copying it here, after this step's forces and before the file is written,
+// makes the run that reads the file continue this one bit for bit. (LIGGGHTS's pair gran has the
+// same gap with spheres.)
+void FixTriParticles::bring_contact_history_up_to_date() {
+  for (int k = 0; k < modify->nfix; ++k)
+    if (std::strcmp(modify->fix[k]->style, "contacthistory") == 0)
+      modify->fix[k]->setup_pre_exchange(); // copies only if the pair ran since the last copy
 }
 
 // A source removed between runs (unfix, another pair_style) leaves nothing behind; the

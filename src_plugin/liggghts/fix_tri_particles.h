@@ -220,6 +220,7 @@ private:
   // `line` is printed (rank 0) to say where it came from.
   void adopt_epsilon(double epsilon, const char *line);
   void warn_of_changed_radii();
+  void bring_contact_history_up_to_date();
 };
 
 } // namespace LAMMPS_NS

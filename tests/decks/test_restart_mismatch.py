@@ -178,19 +178,21 @@ def test_restart_mismatch(ctx):
     print(f"{len(CASES)} differences named, the same deck continues")
 
 
-def test_restart_with_epsilon_auto(ctx):
+def test_restarts_continue_the_run(ctx):
     """A deck with `epsilon auto` (the default) continues from its restart file: the restart
     keeps the layer the run resolved (and says so), and 10 steps after it give the bits of one
-    run of 20 steps."""
+    run of 20 steps, from a file written between two runs (write_restart) and from one written
+    during the run (`restart 10`: pair tri/gran's contact history is brought up to date for
+    it)."""
     base = BASE.format(atom_style="sphere", pair_style=PAIR)
     check("epsilon" not in base, "the base deck gives an epsilon: it must leave it to auto")
     dump = ("dump d all custom 10 {name}.dump id x y z vx vy vz omegax omegay omegaz "
             "f_shapes[1] f_shapes[2] f_shapes[3] f_shapes[4]\n"
             "dump_modify d sort id format \"%d" + " %.17g" * 13 + "\"\n")
-    resumed = resumed_base("s.restart")
-    decks = {"in.whole": base + dump.format(name="whole") + "run 20\n",
+    decks = {"in.whole": base + dump.format(name="whole") + "restart 10 during\nrun 20\n",
              "in.first": base + "run 10\nwrite_restart s.restart\n",
-             "in.resumed": resumed + dump.format(name="resumed") + "run 10\n"}
+             "in.resumed": resumed_base("s.restart") + dump.format(name="resumed") + "run 10\n",
+             "in.during": resumed_base("during.10") + dump.format(name="during") + "run 10\n"}
     write_files(ctx.work)
     outputs = {}
     for name, text in decks.items():
@@ -199,9 +201,11 @@ def test_restart_with_epsilon_auto(ctx):
         _, outputs[name] = run_deck(ctx, os.path.join(ctx.work, name))
     eps = re.findall(r"epsilon auto = (\S+) m", outputs["in.first"])
     check(eps, "the first run printed no 'epsilon auto'")
-    check(f"epsilon auto = {eps[-1]} m, as in the restart file" in outputs["in.resumed"],
-          f"the resumed run did not take epsilon {eps[-1]} from the restart file")
     whole = last_frame(os.path.join(ctx.work, "whole.dump"))
-    again = last_frame(os.path.join(ctx.work, "resumed.dump"))
-    check(whole[0] == again[0] == 20, f"last frames at steps {whole[0]} and {again[0]}")
-    check(whole[1] == again[1], "the resumed run differs from the whole one at step 20")
+    check(whole[0] == 20, f"the whole run's last frame is at step {whole[0]}")
+    for name in ("resumed", "during"):
+        check(f"epsilon auto = {eps[-1]} m, as in the restart file" in outputs[f"in.{name}"],
+              f"in.{name} did not take epsilon {eps[-1]} from the restart file")
+        again = last_frame(os.path.join(ctx.work, f"{name}.dump"))
+        check(again[0] == 20, f"in.{name}'s last frame is at step {again[0]}")
+        check(whole[1] == again[1], f"in.{name} differs from the whole run at step 20")
