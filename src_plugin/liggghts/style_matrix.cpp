@@ -208,7 +208,10 @@ const StyleRow kRows[] = {
     {K::fix, "multisphere/break", C::refused, kClumps,
      "one fix tri/particles shape of the clump's surface (shape NAME file MESH.stl) and fix"
      " tri/nve"},
-    {K::fix, "neighlist/mesh", C::irrelevant, "mesh/surface's own neighbour list", ""},
+    {K::fix, "neighlist/mesh", C::works,
+     "made by fix mesh/surface for its walls; one a deck defines itself frees memory LIGGGHTS "
+     "3.8 goes on using, with spheres too",
+     ""},
     {K::fix, "nve", C::refused, "it integrates translation only: the particles would never turn",
      "fix tri/nve"},
     {K::fix, "nve/asphere", C::refused, "it integrates ellipsoids", "fix tri/nve"},

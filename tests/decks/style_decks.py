@@ -179,7 +179,7 @@ SNIPPETS = {
  "fix multisphere/nointegration": "fix s all multisphere/nointegration",
  "fix concave": "fix s all concave",
  "fix multisphere/break": "fix s all multisphere/break allow_group_and_set yes trigger_threshold 1 trigger_timeStep 0 trigger_name v_sx\nvariable sx atom x",
- "fix neighlist/mesh": "fix s all neighlist/mesh cad",
+ "fix neighlist/mesh": "",  # the base deck's mesh makes one for fix tri/wall
  "fix nve": "fix s all nve",
  "fix nve/asphere": "fix s all nve/asphere",
  "fix nve/asphere/noforce": "fix s all nve/asphere/noforce",
