@@ -4,7 +4,7 @@
 // an indexed mesh with exactly equal vertices merged.
 #pragma once
 
-#include "triangle_mesh.h"
+#include "geometry/triangle_mesh.h"
 
 #include <Eigen/Core>
 #include <array>

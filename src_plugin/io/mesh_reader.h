@@ -45,7 +45,7 @@
 // Thread safety: calls are independent (no shared state).
 #pragma once
 
-#include "triangle_mesh.h"
+#include "geometry/triangle_mesh.h"
 
 #include <stdexcept>
 #include <string>

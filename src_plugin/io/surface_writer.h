@@ -17,7 +17,7 @@
 // std::runtime_error with the path in the message (the fix turns it into error->one).
 #pragma once
 
-#include "triangle_soa.h"
+#include "geometry/triangle_soa.h"
 
 #include <string>
 #include <utility>

@@ -25,7 +25,7 @@
 // the memory held follows the most pairs within reach so far, not the pairs now.
 #pragma once
 
-#include "candidate_cache.h"
+#include "distance/candidate_cache.h"
 
 #include <cstddef>
 #include <cstdint>

@@ -17,8 +17,8 @@
 #pragma once
 
 #include "approach_speed.h"
-#include "contact_force.h"
-#include "interaction_tally.h"
+#include "interaction/interaction_tally.h"
+#include "model/contact_force.h"
 
 #include <string>
 #include <vector>

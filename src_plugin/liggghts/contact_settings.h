@@ -29,8 +29,8 @@
 //                                      material_mapping.h)
 #pragma once
 
-#include "body_interaction.h"
-#include "material_mapping.h"
+#include "interaction/body_interaction.h"
+#include "model/material_mapping.h"
 
 #include <cstddef>
 #include <string>

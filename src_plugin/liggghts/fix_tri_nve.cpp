@@ -2,7 +2,7 @@
 
 #include "fix_tri_particles.h"
 
-#include "rigid_body.h"
+#include "body/rigid_body.h"
 
 #include "atom.h"
 #include "error.h"

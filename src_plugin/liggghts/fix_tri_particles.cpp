@@ -5,9 +5,9 @@
 #include "particle_options.h"
 #include "shape_builder.h"
 
-#include "rigid_body.h"
-#include "seeded_random.h"
-#include "shape_error.h"
+#include "body/rigid_body.h"
+#include "body/shape_error.h"
+#include "geometry/seeded_random.h"
 
 #include "peratom_restart.h"
 #include "restart_shapes.h"

@@ -5,7 +5,7 @@
 // radius := the shape's contact reach (tri::contact_reach: the given mesh's bounding radius,
 // with `layer outside` plus epsilon; so LIGGGHTS's neighbour lists find every pair that can
 // touch) and rmass := density * volume. The contact kernel measures each shape's surface offset
-// inward by epsilon (`layer inside`, the default: kernel/inner_surface.h), so the given mesh
+// inward by epsilon (`layer inside`, the default: kernel/body/inner_surface.h), so the given mesh
 // is the contact surface. World-frame triangles are built on
 // demand, once per force evaluation, for the atoms the contact styles and the output ask for.
 //
@@ -25,12 +25,12 @@
 #include "atom.h"
 #include "fix.h"
 
-#include "body_interaction.h"
+#include "body/shape.h"
 #include "contact_board.h"
+#include "geometry/triangle_soa.h"
+#include "interaction/body_interaction.h"
 #include "material_scales.h"
 #include "run_safety_monitor.h"
-#include "shape.h"
-#include "triangle_soa.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>

@@ -3,8 +3,8 @@
 #include "fix_tri_particles.h"
 #include "incompatible_styles.h"
 
+#include "body/rigid_motion.h"
 #include "peratom_restart.h"
-#include "rigid_motion.h"
 
 #include "atom.h"
 #include "error.h"

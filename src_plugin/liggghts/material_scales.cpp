@@ -1,6 +1,6 @@
 #include "material_scales.h"
 
-#include "timestep_rule.h"
+#include "model/timestep_rule.h"
 
 #include "atom.h"
 #include "comm.h"

@@ -24,9 +24,9 @@
 // approach to it. The pair types that count for epsilon auto are chosen the same way.
 #pragma once
 
+#include "body/shape.h"
 #include "contact_board.h"
-#include "material_mapping.h"
-#include "shape.h"
+#include "model/material_mapping.h"
 
 #include <string>
 #include <vector>

@@ -12,9 +12,9 @@
 #pragma once
 
 #include "contact_board.h"
-#include "body_interaction.h" // InteractionSettings
-#include "contact_model.h"
-#include "material_mapping.h"
+#include "interaction/body_interaction.h" // InteractionSettings
+#include "model/contact_model.h"
+#include "model/material_mapping.h"
 
 #include <string>
 #include <vector>

@@ -48,7 +48,7 @@
 #include "candidate_store.h"
 #include "contact_board.h"
 #include "contact_settings.h"
-#include "interaction_engine.h"
+#include "interaction/interaction_engine.h"
 #include "material_table.h"
 #include "particle_travel.h"
 

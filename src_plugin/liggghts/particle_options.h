@@ -10,7 +10,7 @@
 //                            [layer inside | layer outside]
 // epsilon auto (the default): the soft layer from the contact material (material_scales.h).
 // layer inside (the default): the soft layer lies inside the given mesh, which is the contact
-// surface (kernel/inner_surface.h); layer outside: it lies outside, the particles touch with
+// surface (kernel/body/inner_surface.h); layer outside: it lies outside, the particles touch with
 // their meshes 2 epsilon apart (the convention of liggghts-tri before, for comparison).
 // check_timestep: the time-step check (tri/timestep_rule.h) at the start of every run (setup,
 // the default), also every N steps, or never.

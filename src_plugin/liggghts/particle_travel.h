@@ -15,7 +15,7 @@
 // have no sum: their pairs take the other proofs.
 #pragma once
 
-#include "candidate_cache.h"
+#include "distance/candidate_cache.h"
 
 #include <cstddef>
 #include <vector>

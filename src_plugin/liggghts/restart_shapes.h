@@ -18,7 +18,7 @@
 // doubles) are refused with a message that says so; they cannot be read.
 #pragma once
 
-#include "shape.h"
+#include "body/shape.h"
 
 #include <stdexcept>
 #include <string>

@@ -3,7 +3,7 @@
 #include "approach_speed.h"
 #include "step_tally.h"
 
-#include "penetration_depth.h"
+#include "contact/penetration_depth.h"
 
 #include "atom.h"
 #include "comm.h"

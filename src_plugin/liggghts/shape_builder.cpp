@@ -1,8 +1,8 @@
 #include "shape_builder.h"
 
+#include "body/random_rock.h"
+#include "body/shape_error.h"
 #include "mesh_reader.h"
-#include "random_rock.h"
-#include "shape_error.h"
 
 #include "atom.h"
 #include "domain.h"

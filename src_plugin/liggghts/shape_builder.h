@@ -5,8 +5,8 @@
 // the file).
 #pragma once
 
+#include "body/shape.h"
 #include "particle_options.h"
-#include "shape.h"
 
 #include <vector>
 

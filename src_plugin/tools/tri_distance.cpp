@@ -11,7 +11,7 @@
 // --kernel: bf (brute force, default), penalty (unchecked), hybrid (penalty, brute force
 // where the penalty cannot certify its result to R times the pair's longest edge).
 // --iterations: Newton steps of penalty and hybrid (default 4). --tolerance: R (1e-9).
-#include "distance_kernels.h"
+#include "distance/distance_kernels.h"
 
 #include <cmath>
 #include <cstdio>

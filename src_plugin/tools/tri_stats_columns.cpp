@@ -4,7 +4,7 @@
 // for scripts and tests that address columns by name, and for the README's table:
 //   tri-stats-columns            the table
 //   tri-stats-columns --markdown the README's table rows
-#include "interaction_tally.h"
+#include "interaction/interaction_tally.h"
 
 #include <cstdio>
 #include <cstring>

@@ -1,7 +1,7 @@
 """A cube resting at the bottom of a drum wall that fix move/mesh rotates: friction carries it
 at the drum's surface velocity, omega x r at its position, and it turns with the drum. The
 wall's velocity at the contact comes from the rigid motion fitted to the wall patch's node
-velocities (src_plugin/kernel/rigid_motion.h); the mean of the node velocities, which the wall
+velocities (src_plugin/kernel/body/rigid_motion.h); the mean of the node velocities, which the wall
 used before, is off by omega x (contact - patch mean): 0.52 % of the motion here, against
 0.011 % now."""
 import math

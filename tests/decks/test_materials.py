@@ -1,7 +1,7 @@
 """LIGGGHTS materials on mesh particles (pair_style tri/gran / fix tri/wall `model hooke|hertz`),
 `epsilon auto` and the time-step check of fix tri/particles, through real decks (in.materials,
 in.timestep_check). Every expected number is computed here from the formulas of
-src_plugin/kernel/material_mapping.h, independently of the C++. Tests materials_forces,
+src_plugin/kernel/model/material_mapping.h, independently of the C++. Tests materials_forces,
 materials_restitution, materials_epsilon_auto, materials_timestep, materials_bad_input."""
 import math
 import os

@@ -2,8 +2,8 @@
 // error allowances of the brute-force reference, and the trap that reports a finding.
 #pragma once
 
-#include "distance_primitives.h"
-#include "triangle_distance.h"
+#include "distance/triangle_distance.h"
+#include "geometry/distance_primitives.h"
 
 #include <Eigen/Core>
 #include <algorithm>

@@ -8,8 +8,8 @@
 // MeshFileError), duplicate vertices (the reader merges exactly equal points), or a shape
 // with non-finite mass properties or a non-positive volume, radius or shortest edge.
 // Crashes, hangs and sanitizer reports are libFuzzer's own findings.
+#include "body/shape.h"
 #include "mesh_reader.h"
-#include "shape.h"
 
 #include <cmath>
 #include <cstdint>

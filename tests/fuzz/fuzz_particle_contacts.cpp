@@ -8,8 +8,8 @@
 // byte 1 = triangles of a (1..8, low nibble) and of b (high nibble); byte 2 = eps in
 // 1/1024 of the scale (eps_b = eps_a x (1 + byte 3 / 64)); byte 4 = Newton iterations and
 // batch size; then the coordinates, a's triangles first.
+#include "distance/particle_contacts.h"
 #include "fuzz_common.h"
-#include "particle_contacts.h"
 
 #include <map>
 #include <string>

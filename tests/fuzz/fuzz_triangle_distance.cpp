@@ -18,10 +18,10 @@
 // Tolerances: hybrid 1e-7 x scale (test_distance_kernels.cpp), rounding 1e-12 x scale
 // (test_penalty_distance.cpp), plus the brute force's sliver allowance and, for the
 // intersecting verdict only, a band of a few touch tolerances (fuzz_common.h).
-#include "distance_kernels.h"
+#include "distance/distance_kernels.h"
+#include "distance/penalty_distance.h"
+#include "distance/triangle_distance.h"
 #include "fuzz_common.h"
-#include "penalty_distance.h"
-#include "triangle_distance.h"
 
 #include <vector>
 

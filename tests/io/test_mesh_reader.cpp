@@ -3,8 +3,8 @@
 // properties, text numbers with all their digits; broken files give a MeshFileError that starts
 // with the path and says what.
 #include "../kernel/test_meshes.h"
+#include "body/shape.h"
 #include "mesh_reader.h"
-#include "shape.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>

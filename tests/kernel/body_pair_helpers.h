@@ -3,9 +3,9 @@
 // law, brute force's contacts, and a bitwise comparison of two results.
 #pragma once
 
-#include "body_interaction.h"
-#include "random_rock.h"
-#include "shape.h"
+#include "body/random_rock.h"
+#include "body/shape.h"
+#include "interaction/body_interaction.h"
 #include "test_particles.h"
 
 #include <gtest/gtest.h>

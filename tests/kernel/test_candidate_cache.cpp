@@ -3,8 +3,8 @@
 // step after step, bitwise the result of the search without anything kept, with brute force's
 // contacts, while the kept candidates and gaps do replace most searches.
 #include "body_pair_helpers.h"
-#include "candidate_cache.h"
-#include "interaction_engine.h"
+#include "distance/candidate_cache.h"
+#include "interaction/interaction_engine.h"
 #include "test_particles.h"
 
 #include <gtest/gtest.h>

@@ -2,8 +2,9 @@
 // hooke/stiffness forces, the tangential history (stick, slip, projection), no_history
 // friction, torques with friction, Newton's third law and angular momentum balance, history
 // slot matching, the returned statistics, and no false torque on a cube resting flat.
-#include "contact_force.h"
-#include "particle_contacts.h"
+#include "contact/contact_reduction.h"
+#include "distance/particle_contacts.h"
+#include "model/contact_force.h"
 
 #include <gtest/gtest.h>
 

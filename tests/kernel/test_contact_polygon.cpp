@@ -2,7 +2,7 @@
 // centroids, the cut to the soft layer, agreement with quadrature on random nearly parallel
 // pairs, the 10-degree threshold at 0.99 and 1.01 of it, independence of vertex order and of
 // the roles of a and b, the side of the contact normal, scales 1e-6 to 1e3, degenerate input.
-#include "contact_polygon.h"
+#include "contact/contact_polygon.h"
 
 #include <gtest/gtest.h>
 

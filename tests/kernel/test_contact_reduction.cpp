@@ -3,10 +3,10 @@
 // and intersecting triangles must give finite normals. Triangle-pair contacts are built by a
 // small brute force written here (point-triangle and segment-segment closest points), so the
 // test does not depend on the distance kernel under test elsewhere.
-#include "contact_force.h"
-#include "contact_reduction.h"
-#include "particle_contacts.h"
-#include "point_triangle.h"
+#include "contact/contact_reduction.h"
+#include "distance/particle_contacts.h"
+#include "geometry/point_triangle.h"
+#include "model/contact_force.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // Kernels on pair lists (distance_kernels.h): hybrid and batched hybrid equal brute force
 // within the tolerance on every pair of every set, at every scale; results do not depend on
 // how a list is split.
-#include "distance_kernels.h"
+#include "distance/distance_kernels.h"
 #include "test_triangle_cases.h"
 
 #include <gtest/gtest.h>

@@ -1,9 +1,9 @@
 // inner_surface: the mesh offset inward by the soft layer; exact face planes where the shape
 // allows, every face at least the layer behind elsewhere, errors for features too thin.
-#include "inner_surface.h"
-#include "point_triangle.h"
-#include "random_rock.h"
-#include "shape.h"
+#include "body/inner_surface.h"
+#include "body/random_rock.h"
+#include "body/shape.h"
+#include "geometry/point_triangle.h"
 #include "test_meshes.h"
 
 #include <Eigen/Geometry>

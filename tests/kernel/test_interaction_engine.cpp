@@ -3,10 +3,10 @@
 // (atom, partner) order whatever the order of contribution; and body_interaction's contract
 // (pair symmetry, walls as rigidly moving bodies of infinite mass).
 #include "body_pair_helpers.h"
-#include "interaction_engine.h"
+#include "interaction/interaction_engine.h"
 
-#include "random_rock.h"
-#include "shape.h"
+#include "body/random_rock.h"
+#include "body/shape.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // The statistics table: every column named once, readable and writable, combined as its
 // reduction says; the tally of one interaction counted as documented.
-#include "interaction_tally.h"
+#include "interaction/interaction_tally.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Mass properties against closed forms: cube, box (translated and rotated), tetrahedron,
 // icosphere against the sphere (with the second-order discretisation error).
-#include "mass_properties.h"
+#include "body/mass_properties.h"
 #include "test_meshes.h"
 
 #include <Eigen/Geometry>

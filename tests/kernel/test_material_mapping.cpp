@@ -3,7 +3,7 @@
 // law, the restitution of our linear spring-dashpot (with and without limitForce) against a
 // numerical integration of the contact, its inverse, the full mapping for hooke and hertz
 // (pairs and walls), and the epsilon-auto rule.
-#include "material_mapping.h"
+#include "model/material_mapping.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // validate_mesh: each kind of broken mesh gives its own message naming the problem and where.
-#include "mesh_validation.h"
+#include "body/mesh_validation.h"
 #include "test_meshes.h"
 
 #include <cmath>

@@ -4,8 +4,8 @@
 // order, so vertex and triangle indices are stable and tests may refer to them.
 #pragma once
 
-#include "shape_error.h"
-#include "triangle_mesh.h"
+#include "body/shape_error.h"
+#include "geometry/triangle_mesh.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>

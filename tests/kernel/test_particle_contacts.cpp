@@ -1,8 +1,8 @@
 // Particle-pair driver (particle_contacts.h): every kernel, with and without culling, in
 // every parallel mode and for 1, 2 and 4 threads, reports the same triangle pairs as brute
 // force, with distances within the hybrid tolerance; cases at 0.99 and 1.01 of 2 epsilon.
-#include "particle_contacts.h"
-#include "contact_reduction.h"
+#include "contact/contact_reduction.h"
+#include "distance/particle_contacts.h"
 #include "test_particles.h"
 
 #include <gtest/gtest.h>

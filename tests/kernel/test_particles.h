@@ -1,14 +1,14 @@
 // Small deterministic convex particles for the kernel tests and the kernel benchmark
 // (validation/performance/kernel_bench.cpp includes this header). Not the official shape
-// generator (src_plugin/kernel/random_rock.h): these are bipyramids over an n-gon (2n
+// generator (src_plugin/kernel/body/random_rock.h): these are bipyramids over an n-gon (2n
 // triangles, so 20 and 40 triangles for n = 10 and 20) with a randomly perturbed ring
 // radius, stretched along random axes and rotated, so that every seed gives a different
 // convex "rock" of exactly 2n triangles with bounding diameter about `size`.
 #pragma once
 
-#include "distance_kernels.h"
-#include "triangle_mesh.h"
-#include "triangle_soa.h"
+#include "distance/distance_kernels.h"
+#include "geometry/triangle_mesh.h"
+#include "geometry/triangle_soa.h"
 
 #include <Eigen/Geometry>
 #include <cmath>

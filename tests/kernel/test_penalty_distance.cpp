@@ -1,8 +1,8 @@
 // Penalty distance (penalty_distance.h): its geometric bounds always bracket the brute-force
 // distance, converged results agree with brute force, and the iteration is scale-free.
-#include "penalty_distance.h"
+#include "distance/penalty_distance.h"
+#include "distance/triangle_distance.h"
 #include "test_triangle_cases.h"
-#include "triangle_distance.h"
 
 #include <gtest/gtest.h>
 

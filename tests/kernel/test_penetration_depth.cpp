@@ -3,9 +3,10 @@
 // crossing, a cube face sunk flat), and the force it gives: continuous at the layer boundary,
 // monotone in the depth, the gradient of one potential (an undamped bounce returns its speed),
 // the same for particle-particle and particle-wall, and the resolvable limit reported.
-#include "body_interaction.h"
-#include "interaction_tally.h"
-#include "penetration_depth.h"
+#include "body/shape.h"
+#include "contact/penetration_depth.h"
+#include "interaction/body_interaction.h"
+#include "interaction/interaction_tally.h"
 
 #include "test_meshes.h"
 

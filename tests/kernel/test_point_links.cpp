@@ -1,6 +1,6 @@
 // point_links: the components are those of the definition (every pair within the link length
 // joined), whichever algorithm runs, and every root is its component's smallest index.
-#include "point_links.h"
+#include "contact/point_links.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // closest_point_on_triangle against a dense barycentric sampling of the triangle, in every
 // Voronoi region (corners, edges, face) and for degenerate triangles.
-#include "point_triangle.h"
+#include "geometry/point_triangle.h"
 
 #include <gtest/gtest.h>
 

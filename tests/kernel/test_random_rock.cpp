@@ -1,7 +1,7 @@
 // Random rocks: exact triangle counts, closed valid convex shapes, bounding diameter ==
 // size, determinism, aspect ratios, parameter checks.
-#include "random_rock.h"
-#include "shape.h"
+#include "body/random_rock.h"
+#include "body/shape.h"
 #include "test_meshes.h"
 
 #include <cmath>

@@ -2,9 +2,9 @@
 // call caches (the triangles' plane normals, stamped per call): the points of a reduction must
 // be bitwise those of a fresh workspace, whatever pairs came before -- meshes of other sizes,
 // the same triangle indices on other triangles, and across the stamps' wrap-around.
-#include "contact_reduction.h"
-#include "particle_contacts.h"
-#include "random_rock.h"
+#include "body/random_rock.h"
+#include "contact/contact_reduction.h"
+#include "distance/particle_contacts.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // Tests of rigid_body.h: the NO_SQUISH free rotor against the invariants and the analytic
 // solutions of torque-free rotation, and the seeded random orientations.
-#include "rigid_body.h"
+#include "body/rigid_body.h"
 
 #include <gtest/gtest.h>
 

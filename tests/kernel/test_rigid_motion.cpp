@@ -1,6 +1,6 @@
 // fit_rigid_motion: exact for the node velocities of rigid motions (rotating drums, sliding
 // belts), minimum-norm for collinear nodes, a least-squares fit otherwise.
-#include "rigid_motion.h"
+#include "body/rigid_motion.h"
 
 #include <gtest/gtest.h>
 

@@ -3,11 +3,11 @@
 // and over moving, rotating particle pairs and particle-wall pairs, step after step, a kept
 // axis and the tight cull change nothing: the same contacts as brute force, and bitwise the
 // same forces, torques and history as the search without either.
-#include "body_interaction.h"
-#include "random_rock.h"
-#include "separating_axis.h"
-#include "shape.h"
+#include "body/random_rock.h"
+#include "body/shape.h"
 #include "body_pair_helpers.h"
+#include "distance/separating_axis.h"
+#include "interaction/body_interaction.h"
 #include "test_particles.h"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // make_shape: principal frame, derived numbers, convexity, error prefix; scaled().
-#include "mesh_validation.h"
-#include "random_rock.h"
-#include "shape.h"
+#include "body/mesh_validation.h"
+#include "body/random_rock.h"
+#include "body/shape.h"
 #include "test_meshes.h"
 
 #include <Eigen/Geometry>

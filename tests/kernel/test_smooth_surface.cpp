@@ -1,8 +1,9 @@
 // smooth_surface.h: the lifts of a finely meshed ball rebuild its sphere; facets that are the
 // body (a cube, a rock) get none; the smooth peak of a ball on a plane is the sphere's.
-#include "contact_polygon.h"
-#include "random_rock.h"
-#include "smooth_surface.h"
+#include "body/random_rock.h"
+#include "body/smooth_surface.h"
+#include "contact/contact_polygon.h"
+#include "contact/smooth_peak.h"
 #include "test_meshes.h"
 
 #include <Eigen/Geometry>

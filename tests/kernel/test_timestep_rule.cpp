@@ -1,7 +1,7 @@
 // Tests of timestep_rule.h: the contact time of the linear spring and the verdict at the
 // edges of each threshold, including the deck that must stop (four 1 g particles, kn 5e4 N/m,
 // dt 2e-4 s) and the adaptive case (dtmin tested for the error, dtmax for the warning).
-#include "timestep_rule.h"
+#include "model/timestep_rule.h"
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
 // Triangle boxes and the box cull (triangle_boxes.h): boxes contain their triangles, and the
 // cull keeps every pair closer than the margin; the two-stage cull keeps exactly the full
 // cull's pairs.
-#include "distance_kernels.h"
+#include "distance/distance_kernels.h"
+#include "distance/triangle_boxes.h"
 #include "test_particles.h"
-#include "triangle_boxes.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // Brute-force triangle distance (triangle_distance.h) against FCL's triangle distance on a
 // million seeded random pairs, and against distances known by construction on the
 // adversarial sets at scales 1e-6 .. 1e3.
+#include "distance/triangle_distance.h"
 #include "test_triangle_cases.h"
-#include "triangle_distance.h"
 
 #include <fcl/narrowphase/detail/primitive_shape_algorithm/triangle_distance.h>
 #include <gtest/gtest.h>

@@ -7,9 +7,9 @@
 // every combination), so the distance is exactly d. The pair is then rotated (seeded),
 // moved and scaled, which rounds every corner by ~1e-16 of its coordinates and so moves the
 // true distance by ~1e-15 of the pair's size, far below the tolerance tested (1e-12).
-#include "distance_kernels.h"
+#include "distance/distance_kernels.h"
+#include "distance/triangle_distance.h"
 #include "test_triangle_cases.h"
-#include "triangle_distance.h"
 
 #include <gtest/gtest.h>
 

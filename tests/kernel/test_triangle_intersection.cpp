@@ -1,8 +1,8 @@
 // Intersection helpers (triangle_intersection.h): edge-face crossings and the
 // minimum-overlap normal of intersecting triangles.
+#include "distance/triangle_distance.h"
+#include "geometry/triangle_intersection.h"
 #include "test_triangle_cases.h"
-#include "triangle_distance.h"
-#include "triangle_intersection.h"
 
 #include <gtest/gtest.h>
 

@@ -8,9 +8,9 @@
 //
 // Prints the machine, compiler, thread count and command, then the tables. With --csv it
 // also writes DIR/kernel_bench_{throughput,histogram,threads}.csv for plot_kernel_bench.py.
-#include "particle_contacts.h"
+#include "distance/particle_contacts.h"
+#include "distance/triangle_distance.h"
 #include "test_particles.h"
-#include "triangle_distance.h"
 
 #include <omp.h>
 

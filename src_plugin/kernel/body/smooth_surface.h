@@ -1,0 +1,53 @@
+// The smooth surface a finely meshed curved body samples: a mesh's vertices lie on it, its facets
+// are chords below it. contact/smooth_peak.h measures a ball's contact on that surface, not on
+// the facets; the reduction (contact_reduction.h, step 5b) takes it from there.
+//
+// Why. A 20480-triangle icosphere of radius R has facets 0.57 um (R 3e-4) below its vertex
+// sphere. Measured on the facets, its overlap with a plane is short of the sphere's by 0 to that
+// sag, depending on where the lowest point falls on the lowest facet, and the deepest point is a
+// vertex up to a facet's width off the centre line. That is a different spring (stiffness and
+// contact time off by about 1 %) and a lever that turns with the ball: oblique impacts missed a
+// sphere's rebound spin by up to 8 % (validation/contact/oblique), and refining the mesh
+// shrinks the error only as the sag does. On the smooth surface the overlap is the sphere's to
+// O(h^4 / R^3) (h the edge length) at any orientation, and its deepest point lies on the line
+// of centres.
+//
+// The surface. Each vertex gets a normal n_v: its facets' normals weighted by their angles at
+// the vertex. Over a facet with corners p_0, p_1, p_2 the surface rises above the chord plane,
+// along the facet's normal, by
+//   h(b) = sum over the edges (i, j) of b_i b_j k_ij,   k_ij = (p_i - p_j) . (n_i - n_j) / 2,
+// b the barycentric coordinates: the lift of Phong tessellation at shape factor 1/2. On a
+// sphere (n_v radial) k_ij = |p_i - p_j|^2 / (2 R) and h is exactly the sphere's height above
+// the chord to second order, (r_c^2 - |x - x_c|^2) / (2 R) with x_c, r_c the facet's
+// circumcentre and circumradius. k_ij is a property of the edge alone, so the lift is
+// continuous across edges; it is rotation invariant (a scalar per edge, stored in the body's
+// shape, never transformed); a cylinder's edges along its axis get 0.
+//
+// Where a mesh is not a smooth surface -- a cube's edges and corners, a rock's facets, a gear's
+// teeth -- it is its facets. A vertex is smooth when every facet normal around it is within
+// kSmoothVertexAngle of its normal (a 1280-triangle icosphere: 0.087 rad, 5120: 0.044, 20480:
+// 0.022), not at all from twice that on (a random rock of 40 facets, a cube: 0.5 to 0.96 rad),
+// smoothly between; an edge's k is scaled by both ends' smoothness. Flat regions get k = 0 by
+// the formula (equal normals). A mesh with no smooth edge stores nothing, and every contact
+// with it is computed exactly as on the facets.
+#pragma once
+
+#include "geometry/triangle_mesh.h"
+
+#include <Eigen/Core>
+#include <vector>
+
+namespace tri {
+
+constexpr double kSmoothVertexAngle = 0.15; // rad: facets within it of a vertex normal: smooth
+
+// Three lifts per triangle, for its edges (v0, v1), (v1, v2), (v2, v0) (m); empty when every
+// edge's is 0 (no smooth surface: the facets are the body). Precondition: a valid closed mesh.
+std::vector<double> edge_bulges(const TriangleMesh &mesh);
+
+// The largest lift of any facet (m, >= 0): how far the smooth surface rises above the facets.
+// The contact search reaches that much further for such a body (body_interaction.h: Body::lift),
+// so that a contact starts when the smooth surface, not the first vertex, meets the layer.
+double max_lift(const std::vector<double> &bulges);
+
+} // namespace tri

@@ -1,0 +1,246 @@
+// The host loop shared by every contact-producing style (pair tri/gran, fix tri/wall): a list
+// of body-pair tasks evaluated on OpenMP threads, each thread with scratch of its own, errors
+// caught per task, results tallied and forces summed in an order that does not depend on the
+// thread count. A style keeps only what differs: where its tasks come from and what its second
+// body is (the `evaluate` callable).
+//
+// Determinism: every task writes its result into its own slot; the tally is summed over the
+// slots in task order, and the per-atom sums in (atom, partner) order (stable: equal keys keep
+// the order they were contributed in), so the forces are bitwise the same for any thread count.
+// Errors: an exception thrown by `evaluate` does not leave the parallel region (it would end in
+// std::terminate); the engine keeps the message of the lowest failing task, and the host
+// reports it through its own error path after the loop, naming the bodies of that task.
+// Memory: scratch grows to the largest task seen and is kept (bytes() counts it).
+// Groups: tasks run in groups of consecutive ones (tasks_per_group: kGroupTasks, fewer on
+// several threads when tasks are few), on one thread each (the schedule: split_groups below).
+// Within a group, a task that reaches the distance kernel (kept candidates or a search's)
+// defers it (InteractionScratch::defer); the group's kernels run together
+// (hybrid_distances_jobs: retries and fallbacks fill the vector lanes across body pairs), then
+// those tasks are evaluated a second time and go on from their results. The results are
+// bitwise those of evaluating each task alone. `evaluate` must therefore be callable twice
+// for a task, giving body_interaction the same bodies (the hosts' callables read the step's
+// data and write only through body_interaction).
+#pragma once
+
+#include "interaction/body_interaction.h"
+#include "interaction/interaction_tally.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <exception>
+#include <memory>
+#include <string>
+#include <vector>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+namespace tri {
+
+class InteractionEngine {
+public:
+  // Evaluates tasks [0, n): evaluate(k, scratch, stats) returns task k's PairForceResult,
+  // using `scratch` (this thread's) and adding the distance kernel's counters to `stats`.
+  // threads <= 1: the calling thread alone, no parallel region.
+  template <class Evaluate> void run(std::size_t n, int threads, Evaluate &&evaluate) {
+    run(n, threads, [](std::size_t, int) {}, evaluate);
+  }
+  // The same, with prepare(k, thread) called once for each task, on the thread that evaluates
+  // it (`thread`: its index, 0 to threads - 1), before its first evaluate call: the host's own
+  // per-task work (bodies built, pairs proven apart) then runs inside the engine's one parallel
+  // region, next to the evaluation that reads it, instead of in passes of its own (each a
+  // parallel region, or a serial loop, whose data the other core then has to fetch). An
+  // exception thrown by prepare fails the task as evaluate's would, and it is not evaluated.
+  template <class Prepare, class Evaluate>
+  void run(std::size_t n, int threads, Prepare &&prepare, Evaluate &&evaluate);
+
+  // Tasks per group: enough deferred kernels to fill the retry and fallback lanes and to fetch
+  // the jobs' triangles well ahead (distance_kernels.cpp), few enough that a group's triangles
+  // are still in cache when its tasks go on. Paired runs against 16: the formed hopper and the
+  // settled pile 4-5 % faster at 32, 64 no better.
+  static constexpr long kGroupTasks = 32;
+  // On several threads, smaller groups where there are few tasks (a wall's, or a small pile's):
+  // at least kGroupsPerThread each, down to kMinGroupTasks, so that the last group a thread
+  // takes is a small part of its share. With 197 wall tasks in groups of 32 (7 groups), one
+  // of 2 threads waited for the other 6-20 % of the walls' time.
+  static constexpr long kGroupsPerThread = 8;
+  static constexpr long kMinGroupTasks = 8;
+  static long tasks_per_group(long tasks, int threads) {
+    return threads <= 1 ? kGroupTasks
+                        : std::max(kMinGroupTasks,
+                                   std::min(kGroupTasks, tasks / (kGroupsPerThread * threads)));
+  }
+
+  std::size_t size() const { return results_.size(); }
+  const PairForceResult &result(std::size_t k) const { return results_[k]; }
+
+  bool failed() const { return failed_task_ < results_.size(); }
+  std::size_t failed_task() const { return failed_task_; } // lowest failing task
+  const std::string &failure() const { return failure_; }
+
+  // Statistics of the last run.
+  const InteractionTally &tally() const { return tally_; }
+
+  // Ordered summation of the results' forces. Task k's result acts on up to two atoms: a takes
+  // force_a and torque_a, b takes -force_a and torque_b; set_recipients(k, ...) names them and
+  // their partners (-1: no atom; a wall's task names a only), any time after run() and before
+  // apply(), on any thread (each task its own slot), by default none. apply() adds them to f
+  // and torque (rows indexed by atom) in (atom, partner) order, ties in task order (a before
+  // b): the sums do not depend on the thread count.
+  void set_recipients(std::size_t k, int a, long long partner_of_a, int b, long long partner_of_b) {
+    recipients_[k] = {a, b, partner_of_a, partner_of_b};
+  }
+  void apply(double **f, double **torque);
+
+  // Per-contact records (contact_force.h ContactRecord): set before run(), every task's contact
+  // points are recorded (InteractionScratch::record_contacts) and kept until the next run; off,
+  // nothing is recorded and records(k) is empty. What the virial and contact outputs read.
+  void record_contacts(bool on) { record_ = on; }
+  bool recording() const { return record_; }
+  struct Records {
+    const ContactRecord *first = nullptr;
+    std::size_t count = 0;
+    const ContactRecord *begin() const { return first; }
+    const ContactRecord *end() const { return first + count; }
+  };
+  Records records(std::size_t k) const;
+  // With records, after apply(): the tasks' virials (Virial: each side's records summed in their
+  // order) added to `global` (6 values) in task order, and to vatom (rows by atom) in apply()'s
+  // order, for the sides that apply() gave a recipient: so the sums do not depend on the thread
+  // count, and a contact that apply() gives a rank's atom counts there only.
+  void add_virial(double *global, double **vatom) const;
+
+  std::size_t bytes() const; // heap memory held
+
+private:
+  struct Recipients {
+    int a = -1, b = -1;
+    long long partner_of_a = 0, partner_of_b = 0;
+  };
+  struct Contribution { // one side of a task: its atom, partner, task and side (0: a, 1: b)
+    int atom;
+    long long partner;
+    std::uint32_t task;
+    int side;
+  };
+  std::vector<InteractionScratch> scratch_; // one per thread
+  // One per thread, each on cache lines of its own: every task adds to its thread's counters,
+  // and two threads writing one line (the end of one entry, the start of the next) would pass
+  // it back and forth.
+  struct alignas(64) ThreadStats : ContactStats {};
+  std::vector<ThreadStats> thread_stats_;
+  std::vector<std::vector<long>> deferred_;  // per thread: the group's deferred tasks, by job
+  std::vector<PairForceResult> results_;
+  std::vector<Recipients> recipients_;       // per task
+  bool record_ = false;
+  struct RecordRange { // task k's records: scratch_[thread].records[begin, end)
+    int thread = 0;
+    std::uint32_t begin = 0, end = 0;
+  };
+  std::vector<RecordRange> record_ranges_; // per task, while recording
+  Virial side_virial(const Contribution &c) const;
+  std::vector<Contribution> contributions_; // apply(): the named sides, in task order
+  std::vector<std::uint32_t> sorted_; // apply(): contributions_' indices by (atom, partner)
+  std::vector<std::size_t> first_of_atom_, next_of_atom_; // apply(): the counting sort
+  InteractionTally tally_;
+  std::size_t failed_task_ = 0;
+  std::string failure_;
+
+  // The schedule on several threads. Each thread owns a contiguous range of groups and takes
+  // them from its front; once done it takes the last groups of the others' ranges. A host
+  // lists its tasks in LIGGGHTS's atom order, which the atom sort keeps spatial, so a thread's
+  // own range shares bodies, whose triangles and state then stay in that core's cache (with
+  // groups handed out one by one, a settled pile on 2 threads spent a third more CPU time,
+  // mostly waiting for lines the other core had written). Taking from the back keeps the
+  // owner's remaining groups contiguous and balances uneven ranges (a hopper's tasks crowd
+  // where the pile is). Front and back share one atomic word, so a group is taken once.
+  struct alignas(64) GroupRange {
+    std::atomic<std::uint64_t> bounds{0}; // front << 32 | back, groups [front, back) left
+  };
+  std::unique_ptr<GroupRange[]> ranges_;
+  int num_ranges_ = 0;
+  void split_groups(long groups, int threads);
+  long take_group(int range, int thread); // the next group of `range` for `thread`, or -1
+
+  void prepare(std::size_t n, int threads);
+  void record_failure(std::size_t k, const char *what);
+  void finish();
+};
+
+template <class Prepare, class Evaluate>
+void InteractionEngine::run(std::size_t n, int threads, Prepare &&prepare_task,
+                            Evaluate &&evaluate) {
+  if (threads < 1)
+    threads = 1;
+  prepare(n, threads);
+  const long count = static_cast<long>(n);
+  auto one = [&](long k, int thread, bool first) {
+    try {
+      if (first)
+        prepare_task(static_cast<std::size_t>(k), thread);
+      const std::size_t recorded = scratch_[thread].records.size();
+      results_[k] = evaluate(static_cast<std::size_t>(k), scratch_[thread], thread_stats_[thread]);
+      if (record_) // a deferred first call records nothing; its resumed call overwrites this
+        record_ranges_[k] = {thread, static_cast<std::uint32_t>(recorded),
+                             static_cast<std::uint32_t>(scratch_[thread].records.size())};
+    } catch (const std::exception &e) {
+      record_failure(static_cast<std::size_t>(k), e.what());
+    } catch (...) {
+      record_failure(static_cast<std::size_t>(k), "unknown exception");
+    }
+  };
+  const long group_tasks = tasks_per_group(count, threads);
+  auto group = [&](long g, int thread) {
+    InteractionScratch &scratch = scratch_[thread];
+    const long first = g * group_tasks, last = std::min(count, first + group_tasks);
+    scratch.clear_jobs();
+    deferred_[thread].clear();
+    scratch.defer = true;
+    for (long k = first; k < last; ++k) {
+      const std::size_t queued = scratch.jobs.size();
+      one(k, thread, true);
+      if (scratch.jobs.size() != queued)
+        deferred_[thread].push_back(k);
+    }
+    scratch.defer = false;
+    if (scratch.jobs.empty())
+      return;
+    try {
+      scratch.run_jobs(thread_stats_[thread]);
+    } catch (const std::exception &e) {
+      for (long k : deferred_[thread])
+        record_failure(static_cast<std::size_t>(k), e.what());
+      return;
+    }
+    for (std::size_t j = 0; j < deferred_[thread].size(); ++j) {
+      scratch.resume_job = static_cast<int>(j);
+      one(deferred_[thread][j], thread, false);
+    }
+    scratch.resume_job = -1;
+  };
+  const long groups = (count + group_tasks - 1) / group_tasks;
+  if (threads == 1) {
+    for (long g = 0; g < groups; ++g)
+      group(g, 0);
+  } else {
+    split_groups(groups, threads);
+#pragma omp parallel num_threads(threads)
+    {
+      int thread = 0;
+#ifdef _OPENMP
+      thread = omp_get_thread_num();
+#endif
+      for (long g; (g = take_group(thread, thread)) >= 0;)
+        group(g, thread);
+      for (int other = 1; other < threads; ++other)
+        for (long g; (g = take_group((thread + other) % threads, thread)) >= 0;)
+          group(g, thread);
+    }
+  }
+  finish();
+}
+
+} // namespace tri
