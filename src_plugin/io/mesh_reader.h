@@ -1,4 +1,4 @@
-// Reads a closed triangle mesh from a file, for `shape NAME file PATH` (see DESIGN.md).
+// Reads a closed triangle mesh from a file, for `shape NAME file PATH` of fix tri/particles.
 //
 // Formats, chosen by the extension (case-insensitive), each read by a parser of its own
 // (stl_reader.cpp, obj_reader.cpp, ply_reader.cpp; no VTK):

@@ -4,7 +4,9 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <cstdlib>
+#include <iterator>
 #include <cstring>
 
 namespace tri_liggghts {
@@ -43,25 +45,13 @@ int pair_loop_threads(PairLoop loop, std::size_t num_pairs) {
   return num_pairs >= 8 * static_cast<std::size_t>(max_threads) ? max_threads : 1;
 }
 
-bool parse_contact_keyword(int narg, char **arg, int *i, ContactSettings &s,
-                           const std::string &style, LAMMPS_NS::Error *error) {
-  const std::string key = arg[*i];
-  static const char *known[] = {"kernel", "newton_iters", "batch", "parallel", "cull", "reduction",
-                                "tangential", "absolute_damping", "limitForce",
-                                "tangential_damping", "model", "separation",
-                                "coherence"};
-  bool is_known = false;
-  for (const char *k : known)
-    is_known = is_known || key == k;
-  if (!is_known)
-    return false;
-  if (*i + 1 >= narg)
-    fail(error, style, "missing value after '" + key + "'");
-  const char *value = arg[*i + 1];
+namespace {
+
+// The keywords of the contact search (which kernel, how parallel, what is kept between steps).
+void parse_search_keyword(const std::string &key, const char *value, ContactSettings &s,
+                          const std::string &style, LAMMPS_NS::Error *error) {
   const std::string v = value;
   tri::ContactOptions &d = s.interaction.distance;
-  tri::ContactCoefficients &c = s.interaction.coefficients;
-
   if (key == "kernel") {
     if (v == "bf")
       d.kernel = tri::DistanceKernel::BruteForce;
@@ -115,7 +105,15 @@ bool parse_contact_keyword(int narg, char **arg, int *i, ContactSettings &s,
     s.interaction.coherence = r;
   } else if (key == "separation") {
     s.separation = on_off(key, value, error, style);
-  } else if (key == "reduction") {
+  }
+}
+
+// The keywords of the contact model (reduction, friction, damping, material model).
+void parse_model_keyword(const std::string &key, const char *value, ContactSettings &s,
+                         const std::string &style, LAMMPS_NS::Error *error) {
+  const std::string v = value;
+  tri::ContactCoefficients &c = s.interaction.coefficients;
+  if (key == "reduction") {
     if (v == "clusters")
       s.interaction.reduction = tri::ReductionMethod::clusters;
     else if (v == "paper")
@@ -147,6 +145,29 @@ bool parse_contact_keyword(int narg, char **arg, int *i, ContactSettings &s,
     else
       fail(error, style, "'model' expects hooke/stiffness, hooke or hertz, got '" + v + "'");
   }
+}
+
+} // namespace
+
+bool parse_contact_keyword(int narg, char **arg, int *i, ContactSettings &s,
+                           const std::string &style, LAMMPS_NS::Error *error) {
+  const std::string key = arg[*i];
+  static const char *search[] = {"kernel", "newton_iters", "batch",     "parallel",
+                                 "cull",   "separation",   "coherence"};
+  static const char *model[] = {"reduction", "tangential", "absolute_damping", "limitForce",
+                                "tangential_damping", "model"};
+  auto listed = [&key](const auto &keys) {
+    return std::any_of(std::begin(keys), std::end(keys), [&key](const char *k) { return key == k; });
+  };
+  const bool is_search = listed(search), is_model = listed(model);
+  if (!is_search && !is_model)
+    return false;
+  if (*i + 1 >= narg)
+    fail(error, style, "missing value after '" + key + "'");
+  if (is_search)
+    parse_search_keyword(key, arg[*i + 1], s, style, error);
+  else
+    parse_model_keyword(key, arg[*i + 1], s, style, error);
   *i += 2;
   return true;
 }

@@ -223,110 +223,112 @@ double longest_contact_time(const ContactBoard &board, const TypeBodies &bodies)
   return longest;
 }
 
-void check_timestep(LAMMPS_NS::LAMMPS *lmp, const ContactBoard &board, const TypeBodies &bodies,
-                    double epsilon, double wall_layer, bool report) {
-  const std::vector<ContactBoard::PublishedMaterial> mats = board.materials();
-  const std::vector<Entry> all = entries(mats, bodies);
-  if (all.empty())
-    return;
+namespace {
 
-  const Speeds speeds = approach_speeds(lmp, board);
-
+// The two contacts the check judges: the shortest (its contact time against dt) and the one
+// whose peak overlap at its approach speed takes the largest share of its soft layers.
+struct JudgedContacts {
   const Entry *shortest = nullptr, *deepest = nullptr;
-  double t_shortest = std::numeric_limits<double>::infinity(), deepest_fraction = -1.0;
-  double v_approach = 0.0, deepest_overlap = 0.0, deepest_layers = 0.0, deepest_speed = 0.0;
+  double t_shortest = std::numeric_limits<double>::infinity();
+  double v_approach = 0.0; // m/s, the fastest approach of any contact
+  double deepest_overlap = 0.0, deepest_layers = 0.0, deepest_speed = 0.0;
+};
+
+JudgedContacts judged_contacts(const std::vector<Entry> &all, const Speeds &speeds,
+                               double epsilon, double wall_layer) {
+  JudgedContacts j;
+  double deepest_fraction = -1.0;
   for (const Entry &e : all) {
     const double t = tri::linear_contact_time(e.kn, e.meff_min);
-    if (t < t_shortest) {
-      t_shortest = t;
-      shortest = &e;
+    if (t < j.t_shortest) {
+      j.t_shortest = t;
+      j.shortest = &e;
     }
     const double v_ref = std::max(speeds.of(e.itype, e.jtype, e.wall), e.v_char);
-    v_approach = std::max(v_approach, v_ref);
+    j.v_approach = std::max(j.v_approach, v_ref);
     const double overlap = tri::peak_overlap(e.kn, e.meff_max, v_ref);
     const double other = e.layers_extra >= 0.0 ? e.layers_extra : e.wall ? wall_layer : epsilon;
     const double layers = epsilon + other;
     if (overlap / layers > deepest_fraction) {
       deepest_fraction = overlap / layers;
-      deepest = &e;
-      deepest_overlap = overlap;
-      deepest_layers = layers;
-      deepest_speed = v_ref;
+      j.deepest = &e;
+      j.deepest_overlap = overlap;
+      j.deepest_layers = layers;
+      j.deepest_speed = v_ref;
     }
   }
+  return j;
+}
 
-  const bool adaptive = board.adaptive_dt();
-  tri::TimestepFigures f;
-  f.dt_error = adaptive ? board.dtmin() : lmp->update->dt;
-  f.dt_warn = adaptive ? board.dtmax() : lmp->update->dt;
-  f.contact_time = t_shortest;
-  f.approach_speed = adaptive ? 0.0 : v_approach; // fix tri/adapt_dt bounds the approach itself
-  f.epsilon = epsilon;
-  f.peak_overlap = deepest_overlap;
-  f.layers = deepest_layers;
-  const tri::TimestepVerdict verdict = tri::judge_timestep(f);
-  const std::string contact = describe(*shortest, shortest->meff_min);
-  const double dt_good = tri::kWarnFraction * t_shortest;
+void report_timestep(LAMMPS_NS::LAMMPS *lmp, const JudgedContacts &j, const tri::TimestepFigures &f,
+                     const tri::TimestepVerdict &verdict, bool adaptive,
+                     const std::string &contact) {
+  char steps[300];
+  if (adaptive)
+    std::snprintf(steps, sizeof steps, "dt of fix tri/adapt_dt from %g s (%.3g%%) to %g s (%.3g%%)",
+                  f.dt_error, 100.0 * verdict.error_fraction, f.dt_warn,
+                  100.0 * verdict.contact_fraction);
+  else
+    std::snprintf(steps, sizeof steps, "dt %g s = %.3g%%", f.dt_warn,
+                  100.0 * verdict.contact_fraction);
+  char approach[120];
+  if (adaptive)
+    std::snprintf(approach, sizeof approach, "approach %g m/s (bounded by fix tri/adapt_dt)",
+                  j.v_approach);
+  else
+    std::snprintf(approach, sizeof approach, "approach %g m/s: %.3g epsilon per step",
+                  j.v_approach, verdict.approach_fraction);
   char line[1200];
+  std::snprintf(line, sizeof line,
+                "tri/particles: time-step check: %s of the shortest contact time %g s (%s); "
+                "%s; peak overlap at that speed %.3g%% of the soft layers (%s, types %d and %d)",
+                steps, j.t_shortest, contact.c_str(), approach, 100.0 * verdict.overlap_fraction,
+                source_name(*j.deepest->source).c_str(), j.deepest->itype, j.deepest->jtype);
+  print(lmp, line);
+}
 
-  if (report) {
-    char steps[300];
-    if (adaptive)
-      std::snprintf(steps, sizeof steps,
-                    "dt of fix tri/adapt_dt from %g s (%.3g%%) to %g s (%.3g%%)", f.dt_error,
-                    100.0 * verdict.error_fraction, f.dt_warn, 100.0 * verdict.contact_fraction);
-    else
-      std::snprintf(steps, sizeof steps, "dt %g s = %.3g%%", f.dt_warn,
-                    100.0 * verdict.contact_fraction);
-    char approach[120];
-    if (adaptive)
-      std::snprintf(approach, sizeof approach, "approach %g m/s (bounded by fix tri/adapt_dt)",
-                    v_approach);
-    else
-      std::snprintf(approach, sizeof approach, "approach %g m/s: %.3g epsilon per step", v_approach,
-                    verdict.approach_fraction);
-    std::snprintf(line, sizeof line,
-                  "tri/particles: time-step check: %s of the shortest contact time %g s (%s); "
-                  "%s; peak overlap at that speed %.3g%% of the soft layers (%s, types %d and %d)",
-                  steps, t_shortest, contact.c_str(), approach, 100.0 * verdict.overlap_fraction,
-                  source_name(*deepest->source).c_str(), deepest->itype, deepest->jtype);
-    print(lmp, line);
-  }
-
-  if (verdict.error) {
-    if (adaptive)
-      std::snprintf(line, sizeof line,
-                    "Fix tri/particles: the smallest time step of fix tri/adapt_dt, dtmin %g s, "
-                    "cannot resolve a contact: it is %.3g%% of the shortest contact time %g s "
-                    "(%s), above %g%% (fewer than %g steps per contact); lower dtmin to %g s or "
-                    "less, or use a softer kn or heavier particles",
-                    f.dt_error, 100.0 * verdict.error_fraction, t_shortest, contact.c_str(),
-                    100.0 * tri::kErrorFraction, 1.0 / tri::kErrorFraction, dt_good);
-    else
-      std::snprintf(line, sizeof line,
-                    "Fix tri/particles: time step %g s cannot resolve a contact: it is %.3g%% "
-                    "of the shortest contact time %g s (%s), above %g%% (fewer than %g steps "
-                    "per contact; velocity Verlet is unstable beyond 64%%); use timestep %g or "
-                    "smaller, a softer kn or heavier particles",
-                    f.dt_error, 100.0 * verdict.error_fraction, t_shortest, contact.c_str(),
-                    100.0 * tri::kErrorFraction, 1.0 / tri::kErrorFraction, dt_good);
-    lmp->error->all(FLERR, line);
-  }
-  if (lmp->comm->me != 0)
+void stop_if_unresolved(LAMMPS_NS::LAMMPS *lmp, const JudgedContacts &j,
+                        const tri::TimestepFigures &f, const tri::TimestepVerdict &verdict,
+                        bool adaptive, const std::string &contact, double dt_good) {
+  if (!verdict.error)
     return;
+  char line[1200];
+  if (adaptive)
+    std::snprintf(line, sizeof line,
+                  "Fix tri/particles: the smallest time step of fix tri/adapt_dt, dtmin %g s, "
+                  "cannot resolve a contact: it is %.3g%% of the shortest contact time %g s "
+                  "(%s), above %g%% (fewer than %g steps per contact); lower dtmin to %g s or "
+                  "less, or use a softer kn or heavier particles",
+                  f.dt_error, 100.0 * verdict.error_fraction, j.t_shortest, contact.c_str(),
+                  100.0 * tri::kErrorFraction, 1.0 / tri::kErrorFraction, dt_good);
+  else
+    std::snprintf(line, sizeof line,
+                  "Fix tri/particles: time step %g s cannot resolve a contact: it is %.3g%% "
+                  "of the shortest contact time %g s (%s), above %g%% (fewer than %g steps "
+                  "per contact; velocity Verlet is unstable beyond 64%%); use timestep %g or "
+                  "smaller, a softer kn or heavier particles",
+                  f.dt_error, 100.0 * verdict.error_fraction, j.t_shortest, contact.c_str(),
+                  100.0 * tri::kErrorFraction, 1.0 / tri::kErrorFraction, dt_good);
+  lmp->error->all(FLERR, line);
+}
+
+void warn_of_timestep(LAMMPS_NS::LAMMPS *lmp, const JudgedContacts &j,
+                      const tri::TimestepFigures &f, const tri::TimestepVerdict &verdict,
+                      bool adaptive, const std::string &contact, double dt_good) {
+  char line[1200];
   if (verdict.warn_contact) {
     if (adaptive)
       std::snprintf(line, sizeof line,
                     "Fix tri/particles: fix tri/adapt_dt may raise the time step to dtmax %g s, "
                     "%.3g%% of the shortest contact time %g s (%s): a contact is resolved only "
                     "while its rules keep dt small; dtmax %g s or less resolves every contact",
-                    f.dt_warn, 100.0 * verdict.contact_fraction, t_shortest, contact.c_str(),
+                    f.dt_warn, 100.0 * verdict.contact_fraction, j.t_shortest, contact.c_str(),
                     dt_good);
     else
       std::snprintf(line, sizeof line,
                     "Fix tri/particles: time step %g s is %.3g%% of the shortest contact time "
                     "%g s (%s): fewer than %g steps per contact; %g s or less resolves it",
-                    f.dt_warn, 100.0 * verdict.contact_fraction, t_shortest, contact.c_str(),
+                    f.dt_warn, 100.0 * verdict.contact_fraction, j.t_shortest, contact.c_str(),
                     1.0 / tri::kWarnFraction, dt_good);
     lmp->error->warning(FLERR, line);
   }
@@ -336,19 +338,50 @@ void check_timestep(LAMMPS_NS::LAMMPS *lmp, const ContactBoard &board, const Typ
                   "%.3g epsilon per time step of %g s (more than %g): the soft layer resolves it "
                   "poorly, and at 1 epsilon per step the run stops; use a smaller timestep or "
                   "fix tri/adapt_dt",
-                  v_approach, verdict.approach_fraction, f.dt_warn, tri::kApproachFraction);
+                  j.v_approach, verdict.approach_fraction, f.dt_warn, tri::kApproachFraction);
     lmp->error->warning(FLERR, line);
   }
   if (verdict.warn_overlap) {
+    const Entry &d = *j.deepest;
     std::snprintf(line, sizeof line,
                   "Fix tri/particles: at %g m/s the peak overlap v sqrt(meff / kn) = %g m of "
                   "%s, types %d and %d (meff %g kg, kn %g N/m) exceeds the soft layers (%g m): "
                   "the real surfaces would meet; use a larger epsilon (or epsilon auto) or a "
                   "stiffer material",
-                  deepest_speed, deepest_overlap, source_name(*deepest->source).c_str(),
-                  deepest->itype, deepest->jtype, deepest->meff_max, deepest->kn, deepest_layers);
+                  j.deepest_speed, j.deepest_overlap, source_name(*d.source).c_str(), d.itype,
+                  d.jtype, d.meff_max, d.kn, j.deepest_layers);
     lmp->error->warning(FLERR, line);
   }
+}
+
+} // namespace
+
+void check_timestep(LAMMPS_NS::LAMMPS *lmp, const ContactBoard &board, const TypeBodies &bodies,
+                    double epsilon, double wall_layer, bool report) {
+  const std::vector<ContactBoard::PublishedMaterial> mats = board.materials();
+  const std::vector<Entry> all = entries(mats, bodies);
+  if (all.empty())
+    return;
+  const JudgedContacts j = judged_contacts(all, approach_speeds(lmp, board), epsilon, wall_layer);
+
+  const bool adaptive = board.adaptive_dt();
+  tri::TimestepFigures f;
+  f.dt_error = adaptive ? board.dtmin() : lmp->update->dt;
+  f.dt_warn = adaptive ? board.dtmax() : lmp->update->dt;
+  f.contact_time = j.t_shortest;
+  f.approach_speed = adaptive ? 0.0 : j.v_approach; // fix tri/adapt_dt bounds the approach itself
+  f.epsilon = epsilon;
+  f.peak_overlap = j.deepest_overlap;
+  f.layers = j.deepest_layers;
+  const tri::TimestepVerdict verdict = tri::judge_timestep(f);
+  const std::string contact = describe(*j.shortest, j.shortest->meff_min);
+  const double dt_good = tri::kWarnFraction * j.t_shortest;
+
+  if (report)
+    report_timestep(lmp, j, f, verdict, adaptive, contact);
+  stop_if_unresolved(lmp, j, f, verdict, adaptive, contact, dt_good);
+  if (lmp->comm->me == 0)
+    warn_of_timestep(lmp, j, f, verdict, adaptive, contact, dt_good);
 }
 
 } // namespace tri_liggghts

@@ -202,21 +202,15 @@ Vector3d unit_or_zero(const Vector3d &v) {
   return std::isfinite(len) && len > 0.0 ? Vector3d(v / len) : Vector3d::Zero();
 }
 
-} // namespace
+// A direction along which vertices are sunk, and what is sunk along it.
+struct DeepDirection {
+  Measured measured;
+  Vector3d n = Vector3d::Zero();
+};
 
-double deepen_contacts(const TriangleSoA &a, const SurfaceSide &side_a, const TriangleSoA &b,
-                       const SurfaceSide &side_b, double layer, const Vector3d &reference,
-                       double link_length, std::vector<ContactPoint> &points,
-                       DepthScratch &scratch) {
-  int first = -1;
-  for (int k = 0; k < static_cast<int>(points.size()) && first < 0; ++k)
-    if (points[k].intersecting)
-      first = k;
-  if (first < 0)
-    return 0.0;
-  unique_vertices(a, scratch.vertices_a);
-  unique_vertices(b, scratch.vertices_b);
-
+DeepDirection deep_direction(const TriangleSoA &a, const SurfaceSide &side_a, const TriangleSoA &b,
+                             const SurfaceSide &side_b, double layer, const Vector3d &reference,
+                             const std::vector<ContactPoint> &points, DepthScratch &scratch) {
   // 1. The direction: the reference (line of centres, or towards the wall) if vertices are sunk
   // along it, else the intersecting points' normals either way, the one of least depth (the
   // least translation that separates the bodies).
@@ -239,7 +233,7 @@ double deepen_contacts(const TriangleSoA &a, const SurfaceSide &side_a, const Tr
     }
   }
   if (!(m.depth > 0.0))
-    return 0.0; // no vertex inside (edges crossing): the reduction's points stand
+    return {m, n}; // no vertex inside (edges crossing): the reduction's points stand
   // 2. Refined to the face the deepest vertex is behind (a corner pressed into a face is pushed
   // along the face's normal, whatever the line of centres), while that face agrees.
   for (int iteration = 0; iteration < kDepthNormalIterations; ++iteration) {
@@ -252,6 +246,14 @@ double deepen_contacts(const TriangleSoA &a, const SurfaceSide &side_a, const Tr
     m = mf;
     n = face;
   }
+  return {m, n};
+}
+
+// Every point of the intersection region merged into one, at the measured depth along n.
+void merge_intersection(const TriangleSoA &a, const SurfaceSide &side_a, const TriangleSoA &b,
+                        const SurfaceSide &side_b, double layer, double link_length,
+                        const Measured &m, const Vector3d &n, std::vector<ContactPoint> &points,
+                        DepthScratch &scratch) {
   // 3. One contact for the intersection region: every intersecting point within reach of the
   // sunk vertices (plus a link length) merges into it, the nearest one in any case.
   const double reach = m.reach + link_length;
@@ -307,7 +309,29 @@ double deepen_contacts(const TriangleSoA &a, const SurfaceSide &side_a, const Tr
   std::stable_sort(points.begin(), points.end(), [](const ContactPoint &p, const ContactPoint &q) {
     return p.overlap > q.overlap;
   });
-  return m.depth;
+}
+
+} // namespace
+
+double deepen_contacts(const TriangleSoA &a, const SurfaceSide &side_a, const TriangleSoA &b,
+                       const SurfaceSide &side_b, double layer, const Vector3d &reference,
+                       double link_length, std::vector<ContactPoint> &points,
+                       DepthScratch &scratch) {
+  int first = -1;
+  for (int k = 0; k < static_cast<int>(points.size()) && first < 0; ++k)
+    if (points[k].intersecting)
+      first = k;
+  if (first < 0)
+    return 0.0;
+  unique_vertices(a, scratch.vertices_a);
+  unique_vertices(b, scratch.vertices_b);
+  const DeepDirection deep =
+      deep_direction(a, side_a, b, side_b, layer, reference, points, scratch);
+  if (!(deep.measured.depth > 0.0))
+    return 0.0;
+  merge_intersection(a, side_a, b, side_b, layer, link_length, deep.measured, deep.n, points,
+                     scratch);
+  return deep.measured.depth;
 }
 
 } // namespace tri
