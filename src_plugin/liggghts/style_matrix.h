@@ -3,7 +3,7 @@
 //   - the refusals: fix tri/particles stops a run at init with an ERROR for every refused fix,
 //     compute and pair style of its deck (incompatible_styles.cpp), and pair tri/gran names a
 //     refused pair gran sub-model keyword (cohesion, rolling_friction, surface);
-//   - the README's compatibility matrix (tri-style-matrix --markdown);
+//   - the compatibility matrix of src_plugin/doc/from_spheres.md (tri-style-matrix --markdown);
 //   - the test that runs one short deck per style (tests/decks/test_style_matrix.py) and fails
 //     on a style of `liggghts -h` that this table does not classify.
 // The table is plain data: no LIGGGHTS header, so the tool can print it without LIGGGHTS.

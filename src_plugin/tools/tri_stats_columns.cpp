@@ -1,9 +1,10 @@
 // tri-stats-columns: prints the columns of compute tri/stats, one a line, tab-separated:
 //   index  name  unit  meaning
 // index is 1-based, as in c_ID[index]. From the one statistics table (interaction_tally.h),
-// for scripts and tests that address columns by name, and for the README's table:
+// for scripts and tests that address columns by name, and for the manual's table
+// (src_plugin/doc/compute_tri_stats.md):
 //   tri-stats-columns            the table
-//   tri-stats-columns --markdown the README's table rows
+//   tri-stats-columns --markdown the manual's table rows
 #include "interaction/interaction_tally.h"
 
 #include <cstdio>

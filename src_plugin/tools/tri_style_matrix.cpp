@@ -1,9 +1,10 @@
 // tri-style-matrix: every style of Debian's LIGGGHTS and what it does beside fix tri/particles,
 // from the one table (src_plugin/liggghts/style_matrix.h):
 //   tri-style-matrix             one style a line, tab-separated: kind style class note instead
-//   tri-style-matrix --markdown  the README's matrix: per kind, the styles that work as with
-//                                spheres in one row, one row per style with a meaning or
-//                                refused, the irrelevant ones in one row per model
+//   tri-style-matrix --markdown  the matrix of src_plugin/doc/from_spheres.md: per kind, the
+//                                styles that work as with spheres in one row, one row per
+//                                style with a meaning or refused, the irrelevant ones in one
+//                                row per model
 #include "style_matrix.h"
 
 #include <cstdio>

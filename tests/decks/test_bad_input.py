@@ -115,7 +115,7 @@ def test_bad_contact_input(ctx):
 
 # Orientation and insertion (fix tri/particles `orient file`, `template ID SHAPE`,
 # particletemplate/sphere, particledistribution/discrete): decks written here -> the error
-# they must give (the README's "Bad input and extreme states" rows).
+# they must give (the rows of tests/bad_input.md).
 INSERTION_HEAD = """\
 units           si
 atom_style      sphere

@@ -11,6 +11,8 @@ from decklib import HERE, check, run_deck, thermo_rows
 ROOT = os.path.join(HERE, "..", "..")
 CHUTE = os.path.join(ROOT, "examples", "chute", "in.chute")
 TUTORIAL = "/usr/share/doc/liggghts/examples/LIGGGHTS/Tutorials_public/meshGran"
+# The manual's page on the conversion, which states the command counts.
+FROM_SPHERES = os.path.join("src_plugin", "doc", "from_spheres.md")
 
 
 def code_lines(path):
@@ -65,11 +67,11 @@ def test_chute(ctx):
             removed += i2 - i1
     check(len(tut) > 30 and changed + added + removed < len(tut),
           f"the conversion changed {changed + added + removed} of {len(tut)} commands")
-    with open(os.path.join(ROOT, "README.md")) as f:
+    with open(os.path.join(ROOT, FROM_SPHERES)) as f:
         said = re.search(r"Of the tutorial's (\d+) commands, the conversion changes (\d+) and adds "
                          r"(\d+)", " ".join(f.read().split()))
     check(said and [int(g) for g in said.groups()] == [len(tut), changed, added],
-          f"README.md says {said and said.group(0)!r}; the decks give {len(tut)} commands, "
+          f"{FROM_SPHERES} says {said and said.group(0)!r}; the decks give {len(tut)} commands, "
           f"{changed} changed, {added} added, {removed} removed")
     print(f"conversion: {len(tut)} tutorial commands; {changed} changed, {added} added, "
           f"{removed} removed (examples/chute/in.chute); 40 rocks on the chute at t = 0.2 s, "

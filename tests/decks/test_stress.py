@@ -93,7 +93,7 @@ def test_stress_spheres_agree(ctx):
           f"-m g (z_top - z_bottom) = {expected_pair:g}")
     # (total - pair: the kinetic term m v v of particles all but at rest)
     check(wall == 0.0 and abs(total - pair) < 1e-6 * abs(pair), "LIGGGHTS's fix wall/gran now "
-          "tallies a virial: the README's comparison needs updating")
+          "tallies a virial: src_plugin/doc/contact_model.md's comparison needs updating")
 
 
 def cluster_stress(ctx, phase, threads=1, ranks=1, pairargs="kernel hybrid"):
