@@ -56,7 +56,7 @@ void ComputeTriContactAtom::compute_peratom() {
     count_[i] = 0.0;
   // Each body pair once (its first row), for each of its atoms this rank owns: a pair across
   // ranks counts on both, each for its own atom.
-  for (const tri_liggghts::PublishedContact *c : particles_->board().contacts(source_)) {
+  for (const tri_liggghts::PublishedContact *c : particles_->published().contacts(source_)) {
     if (!c->first_of_pair)
       continue;
     if (c->atom_a < nlocal)

@@ -105,7 +105,7 @@ void ComputeTriContactLocal::grow(int rows) {
 void ComputeTriContactLocal::compute_local() {
   invoked_local = update->ntimestep;
   rows_.clear();
-  for (const tri_liggghts::PublishedContact *c : particles_->board().contacts(source_))
+  for (const tri_liggghts::PublishedContact *c : particles_->published().contacts(source_))
     if (wanted(*c))
       rows_.push_back(c);
   const int n = static_cast<int>(rows_.size());

@@ -49,7 +49,7 @@ void ComputeTriStats::init() {
 
 void ComputeTriStats::compute_vector() {
   invoked_vector = update->ntimestep;
-  const tri::InteractionTally t = tri_liggghts::global_tally(particles_->board(), world, source_);
+  const tri::InteractionTally t = tri_liggghts::global_tally(particles_->published(), world, source_);
   const std::vector<tri::StatColumn> &columns = tri::stats_columns();
   for (std::size_t k = 0; k < columns.size(); ++k) {
     const double v = columns[k].value(t);

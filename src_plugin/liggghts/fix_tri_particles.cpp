@@ -305,11 +305,16 @@ void FixTriParticles::given_surface(int i, tri::TriangleSoA &out) const {
                      Eigen::Vector3d(x[0], x[1], x[2]), out);
 }
 
-void FixTriParticles::pre_force(int) {
-  if (!initialised_since_run_) { // `run N pre no` skips init and setup: nobody joined again
+void FixTriParticles::rejoin_after_run_pre_no() {
+  // Only inside a run: between runs (a variable read by print) the next run's init decides.
+  if (!initialised_since_run_ && update->whichflag != 0) {
     board_.restore_membership();
     initialised_since_run_ = true;
   }
+}
+
+void FixTriParticles::pre_force(int) {
+  rejoin_after_run_pre_no();
   // Atoms inserted during a run (fix insert/pour) arrive unset; their tags exist by now.
   initialise_unset_atoms();
   comm->forward_comm_fix(this);

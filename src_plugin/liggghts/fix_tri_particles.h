@@ -142,6 +142,13 @@ public:
   tri_liggghts::TypeBodies type_bodies() const;
   // Where the contact styles publish, and their readers read (contact_board.h).
   tri_liggghts::ContactBoard &board() { return board_; }
+  // The board for a reader (a compute): what the last force evaluation published. A run with
+  // `pre no` skips init and setup, so its sources have not joined again when thermo reads its
+  // first row: they, and their last tallies, are taken back first.
+  const tri_liggghts::ContactBoard &published() {
+    rejoin_after_run_pre_no();
+    return board_;
+  }
   // World-frame triangles of owned and ghost atom i: valid once ensure_world_triangles_of(i) or
   // update_world_triangles has included i in this force evaluation.
   const tri::TriangleSoA &world_triangles(int i) const { return world_[i]; }
@@ -193,6 +200,7 @@ private:
   // Runs `work` once this force evaluation for the atom whose stamp is `stamp`, whichever
   // thread comes first; the others wait until it is done.
   template <class Work> void once_this_evaluation(long long *stamp, Work work);
+  void rejoin_after_run_pre_no();
   double density_ = 0.0, epsilon_ = 0.0;
   bool epsilon_auto_ = false, epsilon_resolved_ = false;
   bool layer_inside_ = true;

@@ -160,8 +160,9 @@ def run_text(ctx, name, text):
 
 def test_runs_split_with_pre_no_and_clear(ctx):
     """`run N pre no` continues a run without init or setup: 10 + 10 steps give the bits of
-    one run of 20 (thermo rows with %.17g). After `clear` the plugin's styles are still
-    there: the same deck runs again in the same input."""
+    one run of 20 (thermo rows with %.17g), and the second run's first row, printed before any
+    force evaluation, repeats the first run's last (compute tri/stats included). After `clear`
+    the plugin's styles are still there: the same deck runs again in the same input."""
     base = BASE.format(atom_style="sphere", pair_style=PAIR)
     thermo = ("compute st all tri/stats\nthermo_style custom step atoms ke c_st[6]\n"
               "thermo_modify format float %.17g\n")
@@ -174,6 +175,9 @@ def test_runs_split_with_pre_no_and_clear(ctx):
         return rows[-1]
     check(row(whole, 20) == row(split, 20),
           f"step 20: {row(whole, 20)} in one run, {row(split, 20)} after `run 10 pre no`")
+    tens = [l.split() for l in split.splitlines() if l.split()[:1] == ["10"]]
+    check(len(tens) == 2 and tens[0] == tens[1] and float(tens[0][3]) > 0.0,
+          f"step 10 at the end of `run 10` and the start of `run 10 pre no`: {tens}")
     again = run_text(ctx, "in.clear", base + "run 5\nclear\n" + base + "run 5\n")
     check(again.count("Loop time") == 2, "the deck did not run twice around `clear`")
 
