@@ -1,8 +1,10 @@
 // liggghts-tri: Debian's LIGGGHTS with the triangulated-particle styles registered.
 // It takes exactly liggghts's command line and runs the input the same way; the differences
 // are the styles, registered as LIGGGHTS builds its style maps (post_create.cpp, also after
-// `clear`), LIGGGHTS's error paths (error_output.cpp), and `-screen none` (below).
+// `clear`), LIGGGHTS's error paths (error_output.cpp), `-screen none` (below), and the OpenMP
+// threads of a rank when OMP_NUM_THREADS is unset (thread_default.h).
 #include "style_registry.h"
+#include "thread_default.h"
 
 #include "input.h"
 #include "lammps.h"
@@ -73,6 +75,7 @@ std::vector<char *> screen_none_to_null(int argc, char **argv) {
 int main(int argc, char **argv) {
   install_signal_handlers();
   MPI_Init(&argc, &argv);
+  tri_driver::default_openmp_threads(MPI_COMM_WORLD);
 
   if (asks_for_help(argc, argv)) {
     MPI_Comm_rank(MPI_COMM_WORLD, &help_rank);

@@ -24,11 +24,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <stdexcept>
 #include <thread>
 
 #include <mpi.h>
+#include <omp.h>
 #include <string>
 
 using namespace LAMMPS_NS;
@@ -228,7 +230,26 @@ void FixTriParticles::warn_of_changed_radii() {
   }
 }
 
+// Once, at the first run: how the work is shared, since OMP_NUM_THREADS unset no longer means
+// every core per rank (src_plugin/driver/thread_default.h).
+void FixTriParticles::report_parallelism() const {
+  if (comm->me != 0)
+    return;
+  char line[256];
+  std::snprintf(line, sizeof line, "tri/particles: %d MPI rank(s), %d OpenMP thread(s) each%s",
+                comm->nprocs, omp_get_max_threads(),
+                std::getenv("OMP_NUM_THREADS") ? ""
+                                               : " (OMP_NUM_THREADS unset: a node's cores "
+                                                 "shared among its ranks)");
+  if (screen)
+    std::fprintf(screen, "%s\n", line);
+  if (logfile)
+    std::fprintf(logfile, "%s\n", line);
+}
+
 void FixTriParticles::setup_pre_force(int) {
+  if (!run_started_)
+    report_parallelism();
   run_started_ = true;
   monitor_->new_run();
   if (epsilon_auto_ && !epsilon_resolved_)

@@ -201,6 +201,7 @@ private:
   // thread comes first; the others wait until it is done.
   template <class Work> void once_this_evaluation(long long *stamp, Work work);
   void rejoin_after_run_pre_no();
+  void report_parallelism() const;
   double density_ = 0.0, epsilon_ = 0.0;
   bool epsilon_auto_ = false, epsilon_resolved_ = false;
   bool layer_inside_ = true;

@@ -155,10 +155,14 @@ class DeckOutput(str):
 
 
 def run(cmd, cwd, env_extra=None, timeout=600):
-    """Runs a command as run_deck does (MPI_ENV, then `env_extra`) without adding to it;
-    returns (exit code, combined screen output)."""
+    """Runs a command as run_deck does (MPI_ENV, then `env_extra`, where None removes a
+    variable) without adding to it; returns (exit code, combined screen output)."""
     env = dict(os.environ, **MPI_ENV)
-    env.update(env_extra or {})
+    for key, value in (env_extra or {}).items():
+        if value is None:
+            env.pop(key, None)
+        else:
+            env[key] = value
     try:
         p = subprocess.run(cmd, cwd=cwd, env=env, stdout=subprocess.PIPE,
                            stderr=subprocess.STDOUT, text=True, errors="replace",

@@ -4,7 +4,8 @@ threads over pairs and over triangles, from a restart in a new process, and on 1
 ranks together with a colliding pair across the subdomain boundary."""
 import os
 
-from decklib import HERE, check, first_frame, last_frame, make_contact_meshes, run_deck, thermo_rows
+from decklib import (FLIGHT_PERIODIC, HERE, check, first_frame, last_frame, make_contact_meshes,
+                     run_deck, thermo_rows)
 
 CLUSTER_OUT = "cluster_{}.dump"
 
@@ -36,6 +37,23 @@ def test_threads(ctx):
         for tag in ref:
             check(rows[tag] == ref[tag], f"atom {tag}: {phase} differs from pairs_t1:\n "
                   f"{rows[tag]}\n {ref[tag]}")
+
+
+def test_threads_default_shares_a_node(ctx):
+    """OMP_NUM_THREADS unset: one rank runs a thread per core it may use, and two ranks on one
+    node (not bound to cores) share the node's cores instead of each starting one per core;
+    set, it is obeyed. fix tri/particles says which at the first run."""
+    cores = len(os.sched_getaffinity(0))
+    unbound = {"OMP_NUM_THREADS": None, "OMPI_MCA_hwloc_base_binding_policy": "none"}
+    cases = [(1, unbound, cores, True), (2, unbound, max(1, cores // 2), True),
+             (2, {"OMP_NUM_THREADS": "3"}, 3, False)]
+    for ranks, env, threads, unset in cases:
+        _, out = run_deck(ctx, "in.flight_full", dict(FLIGHT_PERIODIC, px=ranks, phase="t"),
+                          ranks=ranks, mpirun=True, env_extra=env)
+        line = [l for l in out.splitlines() if l.startswith("tri/particles:") and "MPI rank" in l]
+        want = f"tri/particles: {ranks} MPI rank(s), {threads} OpenMP thread(s) each"
+        check(len(line) == 1 and line[0].startswith(want) and ("unset" in line[0]) == unset,
+              f"{ranks} rank(s), environment {env}: {line}, expected `{want}`")
 
 
 def test_restart_contacts(ctx):
