@@ -85,7 +85,7 @@ void PairTriGran::collect_tasks() {
   // next rebuild (counting only the pairs within reach, every pair after one that came within
   // reach or left it named another's entry, and was looked up).
   std::size_t slot = 0;
-  const double cutoff = particles_->epsilon() + particles_->epsilon(); // body_interaction's
+  const double cutoff = tri::particle_pair_cutoff(particles_->epsilon(), particles_->epsilon());
   // Every neighbour pair every step, most of them apart: the arrays in locals, which the
   // stores below cannot change (through atom-> they are reloaded for every pair).
   double *const *const x = atom->x;
@@ -125,8 +125,9 @@ void PairTriGran::collect_tasks() {
         travel_.touch(*particles_, atom, i);
         travel_.touch(*particles_, atom, j);
       }
-      if (candidates && candidates->proves_apart_by_travel(
-                            swapped ? travel_.of(j, i) : travel_.of(i, j), cutoff)) {
+      if (candidates && // the sums are touched only where candidates are kept
+          tri::proven_apart_by_travel(candidates, swapped ? travel_.of(j, i) : travel_.of(i, j),
+                                      cutoff)) {
         passed_.push_back({tasks_.size(),
                            tri_liggghts::pair_approach(x[i], atom->v[i], ri, x[j], atom->v[j],
                                                        radius[j]),

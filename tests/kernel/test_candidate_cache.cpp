@@ -281,8 +281,7 @@ TEST(CandidateCache, KeptCandidatesChangeNothingOnMovingRotatingPairs) {
       touching += ref.contacts_after > 0;
       if (st_got.bodies_separated == 0) {
         ++searched;
-        ASSERT_NO_FATAL_FAILURE(
-            expect_brute_force_pairs(m.wa, m.wb, eps, found, what));
+        ASSERT_NO_FATAL_FAILURE(expect_brute_force_pairs(m.wa, m.wb, eps, found, what));
       } else {
         ASSERT_EQ(ref.contacts_after, 0) << what;
       }
@@ -337,9 +336,11 @@ TEST(CandidateCache, KeptCandidatesChangeNothingAgainstAWallPatch) {
     b.state.x = Vector3d(0.5, 0.5, 0.5);
     b.state.mass = 0.0;
     ContactStats st_ref, st_got;
-    const PairForceResult ref = body_interaction_alone(a, b, settings(true), dt, h_ref, scratch_ref, st_ref);
-    const PairForceResult got = body_interaction_alone(a, b, settings(true, 0.05), dt, h_got, scratch_got,
-                                                 st_got, SeparationCache{axis, true, &cache});
+    const PairForceResult ref =
+        body_interaction_alone(a, b, settings(true), dt, h_ref, scratch_ref, st_ref);
+    const PairForceResult got =
+        body_interaction_alone(a, b, settings(true, 0.05), dt, h_got, scratch_got, st_got,
+                               SeparationCache{axis, true, &cache});
     const std::string what = "step " + std::to_string(step);
     ASSERT_NO_FATAL_FAILURE(expect_bitwise(ref, got, what));
     ASSERT_NO_FATAL_FAILURE(expect_same_history(h_ref, h_got, what));
@@ -390,15 +391,15 @@ TEST(CandidateCache, EngineQueuedKernelsChangeNothing) {
                   1.2 * t + 0.3 * p, -1.7 * t, 1.2, -1.7, eps, wa[p], wb[p], a[p], b[p]);
     }
     auto task = [&](Kept &k, std::size_t p) {
-      return BodyPairTask{&a[p], &b[p], &s, dt, k.history[p].data(),
-                          SeparationCache{k.axis[p].data(), true, &k.caches[p]}};
+      const SeparationCache cache{k.axis[p].data(), true, &k.caches[p]};
+      return BodyPairTask{&a[p], &b[p], &s, dt, k.history[p].data(), cache};
     };
     std::vector<PairForceResult> direct(npairs);
     for (int p = 0; p < npairs; ++p) {
       ContactStats stats;
       const BodyPairTask t = task(kept[0], p);
-      direct[p] = body_interaction_alone(*t.a, *t.b, s, dt, t.history, direct_scratch, stats,
-                                         t.cache);
+      direct[p] =
+          body_interaction_alone(*t.a, *t.b, s, dt, t.history, direct_scratch, stats, t.cache);
       touching += direct[p].contacts_after > 0;
     }
     for (int mode = 1; mode <= 2; ++mode) {

@@ -85,8 +85,9 @@ TEST(SeparatingAxis, KeptAxisAndTightCullChangeNothingOnMovingRotatingPairs) {
       const PairForceResult ref =
           body_interaction_alone(a, b, settings(false), dt, h_ref, scratch_ref, st_ref);
       std::vector<TriangleContact> found;
-      const PairForceResult got = body_interaction_alone(
-          a, b, settings(true), dt, h_got, scratch_got, st_got, SeparationCache{cache, true}, &found);
+      const PairForceResult got =
+          body_interaction_alone(a, b, settings(true), dt, h_got, scratch_got, st_got,
+                                 SeparationCache{cache, true}, &found);
       const std::string what = "pair " + std::to_string(pair) + " step " + std::to_string(step);
       ASSERT_NO_FATAL_FAILURE(expect_bitwise(ref, got, what));
       ASSERT_NO_FATAL_FAILURE(expect_same_history(h_ref, h_got, what));
@@ -94,8 +95,7 @@ TEST(SeparatingAxis, KeptAxisAndTightCullChangeNothingOnMovingRotatingPairs) {
       touching += ref.contacts_after > 0;
       if (st_got.bodies_separated == 0) {
         ++searched;
-        ASSERT_NO_FATAL_FAILURE(
-            expect_brute_force_pairs(wa, wb, eps, found, what));
+        ASSERT_NO_FATAL_FAILURE(expect_brute_force_pairs(wa, wb, eps, found, what));
         ASSERT_LE(st_got.triangle_pairs_tested, st_ref.triangle_pairs_tested) << what;
       } else {
         ASSERT_EQ(ref.contacts_after, 0) << what;
@@ -154,8 +154,9 @@ TEST(SeparatingAxis, KeptAxisAndWallPlanesChangeNothingAgainstAWallPatch) {
       const PairForceResult ref =
           body_interaction_alone(a, b, settings(false), dt, h_ref, scratch_ref, st_ref);
       std::vector<TriangleContact> found;
-      const PairForceResult got = body_interaction_alone(
-          a, b, settings(true), dt, h_got, scratch_got, st_got, SeparationCache{cache, true}, &found);
+      const PairForceResult got =
+          body_interaction_alone(a, b, settings(true), dt, h_got, scratch_got, st_got,
+                                 SeparationCache{cache, true}, &found);
       const std::string what = "corner " + std::to_string(corner) + " step " + std::to_string(step);
       ASSERT_NO_FATAL_FAILURE(expect_bitwise(ref, got, what));
       ASSERT_NO_FATAL_FAILURE(expect_same_history(h_ref, h_got, what));
@@ -187,14 +188,14 @@ TEST(SeparatingAxis, ReadOnlyCacheIsNotWritten) {
   ContactStats stats;
   double cache[3] = {0, 0, 0};
   body_interaction_alone(a, b, settings(true), 1e-5, nullptr, scratch, stats,
-                   SeparationCache{cache, false});
+                         SeparationCache{cache, false});
   EXPECT_EQ(Vector3d(cache), Vector3d::Zero());
   body_interaction_alone(a, b, settings(true), 1e-5, nullptr, scratch, stats,
-                   SeparationCache{cache, true});
+                         SeparationCache{cache, true});
   EXPECT_GT(Vector3d(cache).norm(), 0.99); // apart: an axis is kept
   EXPECT_EQ(stats.bodies_separated, 0);
   body_interaction_alone(a, b, settings(true), 1e-5, nullptr, scratch, stats,
-                   SeparationCache{cache, true});
+                         SeparationCache{cache, true});
   EXPECT_EQ(stats.bodies_separated, 1); // and used
 }
 
@@ -247,8 +248,8 @@ TEST(SeparatingAxis, PosesAloneProveWhatTheWorldTrianglesProve) {
       b.state.v = -0.38 * path.dir;
       const InteractionSettings s = settings(true, 0.05);
       ContactStats st_ref, st_got;
-      const PairForceResult ref = body_interaction_alone(a, b, s, dt, h_ref, scratch_ref, st_ref,
-                                                   SeparationCache{axis_ref, true, &kept_ref});
+      const PairForceResult ref = body_interaction_alone(
+          a, b, s, dt, h_ref, scratch_ref, st_ref, SeparationCache{axis_ref, true, &kept_ref});
       Body pa = a, pb = b;
       pa.frame = &path.sa.soa;
       pb.frame = &path.sb.soa;

@@ -58,7 +58,8 @@ std::size_t InteractionScratch::bytes() const {
                      r.cls.capacity() + r.absorbed.capacity() + r.seeds.capacity() +
                      r.alive.capacity() + r.group.capacity() + r.tally.capacity();
   return distance.bytes() + points.capacity() * sizeof(ContactPoint) +
-         records.capacity() * sizeof(ContactRecord) + r.raw.capacity() * sizeof(ReductionWorkspace::Raw) +
+         records.capacity() * sizeof(ContactRecord) +
+         r.raw.capacity() * sizeof(ReductionWorkspace::Raw) +
          r.keys.capacity() * sizeof(ReductionWorkspace::Key) +
          r.polygons.capacity() * sizeof(ContactPolygon) +
          r.points.capacity() * sizeof(Eigen::Vector3d) +
@@ -201,7 +202,7 @@ bool proven_apart(const Body &a, const Body &b, const InteractionSettings &s,
   // The travel proof (O(1) on the host's sums), then a gap kept from an earlier step that the
   // motion since cannot have closed (O(1); a rigid pose's triangles are not read), then the kept
   // axis (O(vertices)). A gap proven now is kept for the travel proof.
-  if (kept && kept->proves_apart_by_travel(cache.travel, cutoff))
+  if (proven_apart_by_travel(kept, cache.travel, cutoff))
     return true;
   double proven = 0.0;
   if (kept && kept->proves_apart(pose_a, *a.triangles, pose_b, *b.triangles, cutoff, &proven)) {
@@ -223,6 +224,10 @@ bool proven_apart(const Body &a, const Body &b, const InteractionSettings &s,
     keep_travel(a, b, *kept, cache.travel, gap);
   }
   return true;
+}
+
+bool proven_apart_by_travel(const CandidateCache *kept, const Travel &travel, double cutoff) {
+  return kept && kept->proves_apart_by_travel(travel, cutoff);
 }
 
 PairForceResult apart_result(const Body &a, const Body &b, const InteractionSettings &s,

@@ -125,6 +125,14 @@ struct SeparationCache {
 // apart_result; any other goes to plan_body_pair (asking again changes nothing).
 bool proven_apart(const Body &a, const Body &b, const InteractionSettings &s,
                   SeparationCache cache);
+// proven_apart's first proof alone, which reads neither body: the travel proof (candidate_cache.h,
+// Travel) of two particles with kept candidates `kept` (null: none kept), `cutoff` their
+// particle_pair_cutoff. For a host that passes over such pairs before it builds their bodies:
+// they change nothing, and count as apart_result(stats) would (InteractionTally::add_passed).
+bool proven_apart_by_travel(const CandidateCache *kept, const Travel &travel, double cutoff);
+// The distance below which the triangles of two particles with soft layers eps_a and eps_b
+// touch (Body::reach_epsilon: a surface lift counts against walls only).
+inline double particle_pair_cutoff(double eps_a, double eps_b) { return eps_a + eps_b; }
 // The result of a pair without contacts (proven apart, or a search that finds none): no force,
 // the history cleared. `history` as for plan_body_pair.
 PairForceResult apart_result(const Body &a, const Body &b, const InteractionSettings &s, double dt,
