@@ -243,33 +243,60 @@ void FixTriWall::prepare(int k, bool update_history, NodeScratch &scratch) {
   build_wall(k, scratch.nodes, scratch.velocities);
   Task &task = tasks_[k];
   particles_->ensure_body_of(task.atom);
-  const tri::SeparationCache cache{settings_.separation ? axis(task.atom, task.mesh) : nullptr,
-                                   update_history, task.candidates};
   task.apart = tri::proven_apart(particles_->body(task.atom), task.wall, settings_.interaction,
-                                 cache);
+                                 separation_cache(task, update_history));
 }
 
-tri::PairForceResult FixTriWall::interact(int k, double dt, bool update_history,
-                                          tri::InteractionScratch &scratch,
-                                          tri::ContactStats &stats) {
+template <class Step> auto FixTriWall::in_kernel_view(int k, bool update_history, Step &&step) {
   const Task &task = tasks_[k];
   const int a = task.atom;
-  // (without a history model the values stay zero: the same zero result)
-  if (task.apart && tri::apart_needs_nothing(history_[a] + task.mesh * tri::kHistoryDoubles))
-    return tri::apart_result(stats);
-  const tri::Body &particle = particles_->body(a);
   const tri::InteractionSettings &s =
       materials_.settings(atom->type[a], meshes_[task.mesh]->atomTypeWall());
+  // (without a history model the values stay zero: the same zero result)
   double *stored = s.coefficients.tangential == tri::TangentialModel::no_history
                        ? nullptr
                        : history_[a] + task.mesh * tri::kHistoryDoubles;
   tri::HistoryView history(stored, false, update_history);
-  if (task.apart)
-    return tri::apart_result(particle, task.wall, s, dt, history.data(), scratch, stats);
-  const tri::SeparationCache cache{settings_.separation ? axis(a, task.mesh) : nullptr,
-                                   update_history, task.candidates, true}; // prepare tested
-  particles_->ensure_world_triangles_of(a);
-  return tri::body_interaction(particle, task.wall, s, dt, history.data(), scratch, stats, cache);
+  return step(particles_->body(a), task.wall, s, history.data());
+}
+
+tri::PairPlan FixTriWall::EngineHost::plan(std::size_t k, int thread,
+                                           tri::InteractionScratch &scratch,
+                                           tri::ContactStats &stats) {
+  fix.prepare(static_cast<int>(k), update_history, fix.node_scratch_[thread]);
+  if (k + kPrefetchAhead < fix.ntasks_)
+    fix.prefetch(fix.tasks_[k + kPrefetchAhead]);
+  const Task &task = fix.tasks_[k];
+  if (task.apart &&
+      tri::apart_needs_nothing(fix.history_[task.atom] + task.mesh * tri::kHistoryDoubles))
+    return tri::apart_result(stats);
+  if (!task.apart) // prepare asked proven_apart from the particle's pose
+    fix.particles_->ensure_world_triangles_of(task.atom);
+  return fix.in_kernel_view(
+      static_cast<int>(k), update_history,
+      [&](const tri::Body &particle, const tri::Body &wall, const tri::InteractionSettings &s,
+          double *history) -> tri::PairPlan {
+        if (task.apart)
+          return tri::apart_result(particle, wall, s, dt, history, scratch, stats);
+        return tri::plan_body_pair(particle, wall, s, dt, history, scratch, stats,
+                                   fix.separation_cache(task, update_history));
+      });
+}
+
+tri::PairForceResult FixTriWall::EngineHost::finish(std::size_t k,
+                                                    const tri::KernelRequest &request,
+                                                    const tri::TrianglePairDistance *results,
+                                                    tri::InteractionScratch &scratch,
+                                                    tri::ContactStats &stats) {
+  const Task &task = fix.tasks_[k];
+  return fix.in_kernel_view(
+      static_cast<int>(k), update_history,
+      [&](const tri::Body &particle, const tri::Body &wall, const tri::InteractionSettings &s,
+          double *history) {
+        return tri::finish_body_pair(particle, wall, s, dt, history, scratch, stats,
+                                     fix.separation_cache(task, update_history), request,
+                                     results);
+      });
 }
 
 void FixTriWall::prefetch(const Task &t) {
@@ -298,15 +325,8 @@ void FixTriWall::compute(bool update_history, int vflag) {
   tri_liggghts::ContactBoard &board = particles_->board();
   const bool loads = update_history && std::find(loaded_.begin(), loaded_.end(), 1) != loaded_.end();
   engine_.record_contacts(evflag || board.contacts_wanted() || loads);
-  engine_.run(ntasks_, nthreads,
-              [&](std::size_t k, int thread) {
-                prepare(static_cast<int>(k), update_history, node_scratch_[thread]);
-              },
-              [&](std::size_t k, tri::InteractionScratch &scratch, tri::ContactStats &stats) {
-                if (k + kPrefetchAhead < ntasks_)
-                  prefetch(tasks_[k + kPrefetchAhead]);
-                return interact(static_cast<int>(k), dt, update_history, scratch, stats);
-              });
+  EngineHost host{*this, dt, update_history};
+  engine_.run(ntasks_, nthreads, host);
   if (engine_.failed()) {
     const Task &t = tasks_[engine_.failed_task()];
     const std::string msg = std::string(kStyle) + ": the contact kernel failed on particle " +

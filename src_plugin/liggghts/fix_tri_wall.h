@@ -2,8 +2,8 @@
 // LIGGGHTS `fix mesh/surface` meshes (static, or moved by `fix move/mesh`). Wall triangles
 // near a particle come from LIGGGHTS's own mesh neighbour list (`neighlist/mesh`, the one
 // `fix wall/gran` uses), so the cost grows with the particles near each wall triangle. The
-// particle's triangles and those wall triangles meet in tri::body_interaction, the same
-// kernel, reduction and force law as pair tri/gran; the wall material is the mesh's type.
+// particle's triangles and those wall triangles meet in the kernel (body_interaction.h): the
+// same search, reduction and force law as pair tri/gran; the wall material is the mesh's type.
 //
 //   fix ID group tri/wall mesh MESH_ID [MESH_ID ...] [epsilon E] [virial yes|no]
 //                         [model hooke/stiffness|hooke|hertz]
@@ -121,8 +121,25 @@ private:
   void prepare(int k, bool update_history, NodeScratch &scratch);
   void build_wall(int k, std::vector<Eigen::Vector3d> &nodes,
                   std::vector<Eigen::Vector3d> &node_velocities);
-  tri::PairForceResult interact(int k, double dt, bool update_history,
+  // Runs step(particle, wall, settings, history) on task k, its history viewed as the kernel
+  // sees it and written back after the step.
+  template <class Step> auto in_kernel_view(int k, bool update_history, Step &&step);
+  tri::SeparationCache separation_cache(const Task &task, bool update_history) {
+    return {settings_.separation ? axis(task.atom, task.mesh) : nullptr, update_history,
+            task.candidates};
+  }
+  // What the engine asks of this fix for task k (interaction_engine.h: the host).
+  struct EngineHost {
+    FixTriWall &fix;
+    double dt;
+    bool update_history;
+    tri::PairPlan plan(std::size_t k, int thread, tri::InteractionScratch &scratch,
+                       tri::ContactStats &stats);
+    tri::PairForceResult finish(std::size_t k, const tri::KernelRequest &request,
+                                const tri::TrianglePairDistance *results,
                                 tri::InteractionScratch &scratch, tri::ContactStats &stats);
+    void complete(std::size_t, tri::PairForceResult &) {} // all after the loop
+  };
 };
 
 } // namespace LAMMPS_NS

@@ -85,7 +85,7 @@ void PairTriGran::collect_tasks() {
   // next rebuild (counting only the pairs within reach, every pair after one that came within
   // reach or left it named another's entry, and was looked up).
   std::size_t slot = 0;
-  const double cutoff = particles_->epsilon() + particles_->epsilon(); // body_interaction's
+  const double cutoff = tri::particle_pair_cutoff(particles_->epsilon(), particles_->epsilon());
   // Every neighbour pair every step, most of them apart: the arrays in locals, which the
   // stores below cannot change (through atom-> they are reloaded for every pair).
   double *const *const x = atom->x;
@@ -125,8 +125,9 @@ void PairTriGran::collect_tasks() {
         travel_.touch(*particles_, atom, i);
         travel_.touch(*particles_, atom, j);
       }
-      if (candidates && candidates->proves_apart_by_travel(
-                            swapped ? travel_.of(j, i) : travel_.of(i, j), cutoff)) {
+      if (candidates && // the sums are touched only where candidates are kept
+          tri::proven_apart_by_travel(candidates, swapped ? travel_.of(j, i) : travel_.of(i, j),
+                                      cutoff)) {
         passed_.push_back({tasks_.size(),
                            tri_liggghts::pair_approach(x[i], atom->v[i], ri, x[j], atom->v[j],
                                                        radius[j]),
@@ -148,27 +149,23 @@ PairTriGran::TaskView PairTriGran::view(const Task &task) {
   return v;
 }
 
-tri::PairForceResult PairTriGran::evaluate(const Task &task, tri::InteractionScratch &scratch,
-                                           tri::ContactStats &stats, double dt,
-                                           bool update_history) {
-  if (task.apart && tri::apart_needs_nothing(task.history))
-    return tri::apart_result(stats); // the axis stays as it is: its view would write it back
+template <class Step>
+auto PairTriGran::in_kernel_view(const Task &task, bool update_history, Step &&step) {
   TaskView v = view(task);
-  // prepare() has tested the kept gap and axis.
+  // prepare() has asked proven_apart.
   const tri::SeparationCache cache{task.axis ? v.axis : nullptr, update_history, task.candidates,
-                                   true, travel_.of(v.a, v.b)};
+                                   travel_.of(v.a, v.b)};
   const tri::InteractionSettings &s = materials_.settings(atom->type[v.a], atom->type[v.b]);
-  // Stored as seen from (i, j); the kernel sees it from (a, b), and the view writes the values
-  // back when it goes out of scope.
-  tri::HistoryView history(task.history, task.swapped, update_history);
-  const tri::Body &a = particles_->body(v.a), &b = particles_->body(v.b);
-  const tri::PairForceResult r =
-      task.apart ? tri::apart_result(a, b, s, dt, history.data(), scratch, stats)
-                 : tri::body_interaction(a, b, s, dt, history.data(), scratch, stats, cache);
+  auto out = [&] {
+    // Stored as seen from (i, j); the kernel sees it from (a, b), and the view writes the
+    // values back when it goes out of scope.
+    tri::HistoryView history(task.history, task.swapped, update_history);
+    return step(particles_->body(v.a), particles_->body(v.b), s, history.data(), cache);
+  }();
   if (task.axis && update_history)
     for (int d = 0; d < 3; ++d)
       task.axis[d] = v.sign * v.axis[d];
-  return r;
+  return out;
 }
 
 void PairTriGran::prepare(Task &task, bool update_history) {
@@ -176,9 +173,73 @@ void PairTriGran::prepare(Task &task, bool update_history) {
   particles_->ensure_body_of(task.j);
   TaskView v = view(task);
   const tri::SeparationCache cache{task.axis ? v.axis : nullptr, update_history, task.candidates,
-                                   false, travel_.of(v.a, v.b)};
+                                   travel_.of(v.a, v.b)};
   task.apart = tri::proven_apart(particles_->body(v.a), particles_->body(v.b),
                                  settings_.interaction, cache);
+}
+
+tri::PairPlan PairTriGran::EngineHost::plan(std::size_t k, int, tri::InteractionScratch &scratch,
+                                            tri::ContactStats &stats) {
+  Task &task = style.tasks_[k];
+  style.prepare(task, update_history);
+  if (k + kPrefetchAhead < style.tasks_.size())
+    style.prefetch(style.tasks_[k + kPrefetchAhead]);
+  if (task.apart && tri::apart_needs_nothing(task.history))
+    return tri::apart_result(stats); // the axis stays as it is: its view would write it back
+  if (!task.apart) { // world-frame triangles as they are needed (cache)
+    style.particles_->ensure_world_triangles_of(task.i);
+    style.particles_->ensure_world_triangles_of(task.j);
+  }
+  return style.in_kernel_view(
+      task, update_history,
+      [&](const tri::Body &a, const tri::Body &b, const tri::InteractionSettings &s,
+          double *history, const tri::SeparationCache &cache) -> tri::PairPlan {
+        if (task.apart)
+          return tri::apart_result(a, b, s, dt, history, scratch, stats);
+        return tri::plan_body_pair(a, b, s, dt, history, scratch, stats, cache);
+      });
+}
+
+tri::PairForceResult PairTriGran::EngineHost::finish(std::size_t k,
+                                                     const tri::KernelRequest &request,
+                                                     const tri::TrianglePairDistance *results,
+                                                     tri::InteractionScratch &scratch,
+                                                     tri::ContactStats &stats) {
+  return style.in_kernel_view(
+      style.tasks_[k], update_history,
+      [&](const tri::Body &a, const tri::Body &b, const tri::InteractionSettings &s,
+          double *history, const tri::SeparationCache &cache) {
+        return tri::finish_body_pair(a, b, s, dt, history, scratch, stats, cache, request, results);
+      });
+}
+
+void PairTriGran::EngineHost::complete(std::size_t k, tri::PairForceResult &r) {
+  const Task &task = style.tasks_[k];
+  // With newton off a pair with a ghost is evaluated by both owners' ranks (or, across a
+  // periodic boundary, twice on one): half its energy each, so that compute tri/stats sums
+  // every contact's energy once.
+  if (!newton && task.j >= nlocal)
+    r.elastic_energy *= 0.5;
+  if (task.touching) { // the tangential history or the axis: LIGGGHTS keeps all or nothing
+    const double *values = task.touching_values;
+    // An apart pair's clear history (its slot 0 empty) is all zero: only the values after it
+    // are read.
+    const bool clear = task.apart && tri::apart_needs_nothing(task.history);
+    const double *from = clear && task.history == values ? values + tri::kHistoryDoubles : values;
+    *task.touching =
+        std::any_of(from, values + style.dnum_pairgran, [](double v) { return v != 0.0; });
+  }
+  LAMMPS_NS::Atom *atom = style.atom;
+  if (r.contacts_after > 0) { // r is the force on the pair's first atom (a)
+    const int a = task.swapped ? task.j : task.i, b = task.swapped ? task.i : task.j;
+    style.engine_.set_recipients(k, newton || a < nlocal ? a : -1, atom->tag[b],
+                                 newton || b < nlocal ? b : -1, atom->tag[a]);
+  } // (a is i or j; i is always owned)
+  const tri::BodyState &si = style.particles_->body(task.i).state;
+  const tri::BodyState &sj = style.particles_->body(task.j).state;
+  style.task_geometry_[k] =
+      tri_liggghts::pair_approach(si.x.data(), si.v.data(), atom->radius[task.i], sj.x.data(),
+                                  sj.v.data(), atom->radius[task.j]);
 }
 
 // A task's kept state (candidates, contact history, axis) is scattered over the heap; asked for
@@ -213,49 +274,8 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
   particles_->prepare_bodies();
   tri_liggghts::ContactBoard &board = particles_->board();
   engine_.record_contacts(virial_wanted || board.contacts_wanted());
-  engine_.run(tasks_.size(), nthreads,
-              [&](std::size_t k, int) { prepare(tasks_[k], update_history); },
-              [&](std::size_t k, tri::InteractionScratch &scratch, tri::ContactStats &stats) {
-                if (k + kPrefetchAhead < tasks_.size())
-                  prefetch(tasks_[k + kPrefetchAhead]);
-                const Task &task = tasks_[k];
-                if (!task.apart) { // world-frame triangles as they are needed (cache)
-                  particles_->ensure_world_triangles_of(task.i);
-                  particles_->ensure_world_triangles_of(task.j);
-                }
-                const std::size_t queued = scratch.jobs.size();
-                tri::PairForceResult r = evaluate(task, scratch, stats, dt, update_history);
-                if (scratch.jobs.size() != queued)
-                  return r; // its kernel deferred: the resumed call returns the result
-                // With newton off a pair with a ghost is evaluated by both owners' ranks (or,
-                // across a periodic boundary, twice on one): half its energy each, so that
-                // compute tri/stats sums every contact's energy once.
-                if (!newton && task.j >= nlocal)
-                  r.elastic_energy *= 0.5;
-                // The task's own bookkeeping, here on the threads rather than after the loop,
-                // once evaluate() has written its history back.
-                if (task.touching) { // the tangential history or the axis: LIGGGHTS keeps all
-                  const double *values = task.touching_values; // or nothing
-                  // An apart pair's clear history (its slot 0 empty) is all zero: only the
-                  // values after it are read.
-                  const bool clear = task.apart && tri::apart_needs_nothing(task.history);
-                  const double *from =
-                      clear && task.history == values ? values + tri::kHistoryDoubles : values;
-                  *task.touching = std::any_of(from, values + dnum_pairgran,
-                                               [](double v) { return v != 0.0; });
-                }
-                if (r.contacts_after > 0) { // r is the force on the pair's first atom (a)
-                  const int a = task.swapped ? task.j : task.i, b = task.swapped ? task.i : task.j;
-                  engine_.set_recipients(k, newton || a < nlocal ? a : -1, atom->tag[b],
-                                         newton || b < nlocal ? b : -1, atom->tag[a]);
-                } // (a is i or j; i is always owned)
-                const tri::BodyState &si = particles_->body(task.i).state;
-                const tri::BodyState &sj = particles_->body(task.j).state;
-                task_geometry_[k] =
-                    tri_liggghts::pair_approach(si.x.data(), si.v.data(), atom->radius[task.i],
-                                                sj.x.data(), sj.v.data(), atom->radius[task.j]);
-                return r;
-              });
+  EngineHost host{*this, dt, update_history, newton, nlocal};
+  engine_.run(tasks_.size(), nthreads, host);
   if (engine_.failed())
     report_failure();
 

@@ -1,7 +1,7 @@
 // pair_style tri/gran: contact forces between triangulated particles (fix tri/particles).
 // LIGGGHTS's granular neighbour list (radius = the contact reach) gives candidate
-// pairs; for each pair whose bounding spheres overlap, tri::body_interaction finds the
-// triangle pairs within the soft layers, reduces them to contact points and applies the
+// pairs; for each pair whose bounding spheres overlap, the kernel (body_interaction.h) finds
+// the triangle pairs within the soft layers, reduces them to contact points and applies the
 // hooke/stiffness force law with friction; forces and torques go to both particles.
 //
 //   pair_style tri/gran [model hooke/stiffness|hooke|hertz] [contact keywords, see
@@ -22,15 +22,15 @@
 // on those.
 //
 // The loop, scratch, error capture and ordered sums are tri::InteractionEngine's (shared with
-// fix tri/wall); this style lists the pairs and says what its two bodies are. It publishes
-// its tallies and its neighbour list on the contact board of fix tri/particles.
+// fix tri/wall); this style lists the pairs and says what its two bodies are (EngineHost). It
+// publishes its tallies and its neighbour list on the contact board of fix tri/particles.
 //
 // Determinism: the per-pair work (OpenMP over particle pairs, or inside one pair) writes
 // results into a per-pair slot, and one thread sums them afterwards, so the result does not
 // depend on the thread count. It does not depend on the number of MPI ranks either: every
 // pair is evaluated as (lower atom tag, higher atom tag), whichever atom the rank owns and
-// whichever order the neighbour list has them in (tri::body_interaction(b, a) equals
-// -body_interaction(a, b) only to rounding), and the contributions to an atom are summed in
+// whichever order the neighbour list has them in (the kernel's force for (b, a) equals minus
+// that for (a, b) only to rounding), and the contributions to an atom are summed in
 // the order of the partners' tags, not the neighbour list's, which follows the decomposition.
 // So a pair's force is bitwise the same on every rank that evaluates it, and so is each
 // atom's total.
@@ -88,14 +88,28 @@ private:
     double axis[3];
   };
   static TaskView view(const Task &task);
-  // One task through body_interaction (or apart_result), its history and axis as seen from
-  // (a, b).
-  tri::PairForceResult evaluate(const Task &task, tri::InteractionScratch &scratch,
-                                tri::ContactStats &stats, double dt, bool update_history);
-  // A task's first work, on the engine's thread that evaluates it: its atoms' Body records,
+  // Runs step(a, b, settings, history, cache) on a task as the kernel sees it: its bodies in
+  // tag order, its history and axis viewed from (a, b) and written back after the step.
+  template <class Step> auto in_kernel_view(const Task &task, bool update_history, Step &&step);
+  // A task's first work, on the engine's thread that runs it: its atoms' Body records,
   // and `apart` (tri::proven_apart, from those records without their triangles): only the
   // other tasks' atoms need world-frame triangles this step.
   void prepare(Task &task, bool update_history);
+  // What the engine asks of this style for task k (interaction_engine.h: the host).
+  struct EngineHost {
+    PairTriGran &style;
+    double dt;
+    bool update_history, newton;
+    int nlocal;
+    tri::PairPlan plan(std::size_t k, int thread, tri::InteractionScratch &scratch,
+                       tri::ContactStats &stats);
+    tri::PairForceResult finish(std::size_t k, const tri::KernelRequest &request,
+                                const tri::TrianglePairDistance *results,
+                                tri::InteractionScratch &scratch, tri::ContactStats &stats);
+    // The task's own bookkeeping (its energy's share, LIGGGHTS's touch flag, its recipients,
+    // the run-safety geometry), on the threads rather than after the loop.
+    void complete(std::size_t k, tri::PairForceResult &r);
+  };
   class FixTriParticles *particles_ = nullptr;
   int board_slot_ = -1;
   tri_liggghts::ContactSettings settings_;

@@ -10,6 +10,7 @@
 // batch size; then the coordinates, a's triangles first.
 #include "distance/particle_contacts.h"
 #include "fuzz_common.h"
+#include "triangle_contact_search.h"
 
 #include <map>
 #include <string>
@@ -18,6 +19,7 @@
 
 using namespace tri;
 using tri_fuzz::require;
+using tri_test::find_triangle_contacts;
 
 namespace {
 

@@ -1,20 +1,25 @@
-// Helpers shared by the tests of what body_interaction.h keeps between steps (the separating
-// axis, test_separating_axis.cpp; the candidates, test_candidate_cache.cpp): rocks, one force
-// law, brute force's contacts, and a bitwise comparison of two results.
+// Helpers shared by the tests of body_interaction.h and what it keeps between steps (the
+// separating axis, test_separating_axis.cpp; the candidates, test_candidate_cache.cpp): one
+// body pair evaluated alone (the direct path that the engine's queued one must match bit for
+// bit), engine hosts, rocks, one force law, brute force's contacts, and a bitwise comparison of
+// two results.
 #pragma once
 
 #include "body/random_rock.h"
 #include "body/shape.h"
+#include "distance/distance_kernels.h"
 #include "interaction/body_interaction.h"
 #include "test_particles.h"
+#include "triangle_contact_search.h"
 
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
 #include <cstdint>
 #include <random>
-#include <utility>
 #include <string>
+#include <utility>
+#include <variant>
 #include <vector>
 
 namespace tri_test {
@@ -36,8 +41,95 @@ inline std::vector<tri::TriangleContact> brute_force_contacts(const tri::Triangl
   opt.cull = false;
   std::vector<tri::TriangleContact> out;
   tri::ContactStats stats;
-  tri::find_triangle_contacts(a, ea, b, eb, opt, out, stats);
+  find_triangle_contacts(a, ea, b, eb, opt, out, stats);
   return out;
+}
+
+// A body pair that proven_apart has not proven apart, evaluated alone: planned, its kernel
+// request (if any) run at once as one job, and finished. `contacts` (optional): the triangle
+// contacts of that job (none where the plan gave the result itself).
+inline tri::PairForceResult body_interaction_not_apart(
+    const tri::Body &a, const tri::Body &b, const tri::InteractionSettings &s, double dt,
+    double *history, tri::InteractionScratch &scratch, tri::ContactStats &stats,
+    tri::SeparationCache cache = {}, std::vector<tri::TriangleContact> *contacts = nullptr) {
+  if (contacts)
+    contacts->clear();
+  tri::PairPlan plan = tri::plan_body_pair(a, b, s, dt, history, scratch, stats, cache);
+  if (const tri::PairForceResult *done = std::get_if<tri::PairForceResult>(&plan))
+    return *done;
+  tri::KernelRequest &request = std::get<tri::KernelRequest>(plan);
+  std::vector<tri::TrianglePairDistance> results(static_cast<std::size_t>(request.job.count));
+  request.job.out = results.data();
+  tri::hybrid_distances_jobs(&request.job, 1, stats);
+  if (contacts) {
+    tri::ContactStats ignored;
+    tri::contacts_from_results(request.job.pairs, results.data(), request.job.count,
+                               a.reach_epsilon(b) + b.reach_epsilon(a), *contacts, ignored);
+  }
+  return tri::finish_body_pair(a, b, s, dt, history, scratch, stats, cache, request,
+                               results.data());
+}
+
+// One body pair evaluated alone, the way a host does: apart_result where proven_apart says so,
+// else as above.
+inline tri::PairForceResult
+body_interaction_alone(const tri::Body &a, const tri::Body &b, const tri::InteractionSettings &s,
+                       double dt, double *history, tri::InteractionScratch &scratch,
+                       tri::ContactStats &stats, tri::SeparationCache cache = {},
+                       std::vector<tri::TriangleContact> *contacts = nullptr) {
+  if (tri::proven_apart(a, b, s, cache)) {
+    if (contacts)
+      contacts->clear();
+    return tri::apart_result(a, b, s, dt, history, scratch, stats);
+  }
+  return body_interaction_not_apart(a, b, s, dt, history, scratch, stats, cache, contacts);
+}
+
+// An engine host (interaction_engine.h) for body pairs: pair(k) gives task k's BodyPairTask,
+// and each task goes as body_interaction_alone's, its kernel queued by the engine.
+struct BodyPairTask {
+  const tri::Body *a, *b;
+  const tri::InteractionSettings *settings;
+  double dt;
+  double *history;
+  tri::SeparationCache cache;
+};
+template <class Pair> struct BodyPairHost {
+  Pair pair;
+  tri::PairPlan plan(std::size_t k, int, tri::InteractionScratch &scratch,
+                     tri::ContactStats &stats) {
+    const BodyPairTask t = pair(k);
+    if (tri::proven_apart(*t.a, *t.b, *t.settings, t.cache))
+      return tri::apart_result(*t.a, *t.b, *t.settings, t.dt, t.history, scratch, stats);
+    return tri::plan_body_pair(*t.a, *t.b, *t.settings, t.dt, t.history, scratch, stats, t.cache);
+  }
+  tri::PairForceResult finish(std::size_t k, const tri::KernelRequest &request,
+                              const tri::TrianglePairDistance *results,
+                              tri::InteractionScratch &scratch, tri::ContactStats &stats) {
+    const BodyPairTask t = pair(k);
+    return tri::finish_body_pair(*t.a, *t.b, *t.settings, t.dt, t.history, scratch, stats, t.cache,
+                                 request, results);
+  }
+  void complete(std::size_t, tri::PairForceResult &) {}
+};
+template <class Pair> BodyPairHost<Pair> body_pair_host(Pair pair) { return {pair}; }
+
+// An engine host whose tasks finish at their plan with result(k): for the engine's own
+// contract (schedule, errors, sums), without bodies.
+template <class Result> struct FinishedTaskHost {
+  Result result;
+  tri::PairPlan plan(std::size_t k, int, tri::InteractionScratch &, tri::ContactStats &) {
+    return result(k);
+  }
+  tri::PairForceResult finish(std::size_t, const tri::KernelRequest &,
+                              const tri::TrianglePairDistance *, tri::InteractionScratch &,
+                              tri::ContactStats &) {
+    return {}; // never asked: no plan requests the kernel
+  }
+  void complete(std::size_t, tri::PairForceResult &) {}
+};
+template <class Result> FinishedTaskHost<Result> finished_task_host(Result result) {
+  return {result};
 }
 
 // tight: the two-frame cull (default); false: world boxes only. coherence: kept candidates'

@@ -5,6 +5,7 @@
 #include "contact/contact_reduction.h"
 #include "distance/particle_contacts.h"
 #include "model/contact_force.h"
+#include "triangle_contact_search.h"
 
 #include <gtest/gtest.h>
 
@@ -872,7 +873,7 @@ TEST(PairContactForce, RestingCubeHasNoTorqueAboutItsCentreOfMass) {
             tri::ContactStats stats;
             tri::ContactOptions opt;
             opt.kernel = kernel;
-            tri::find_triangle_contacts(ta, eps, tb, eps, opt, raw, stats);
+            tri_test::find_triangle_contacts(ta, eps, tb, eps, opt, raw, stats);
             tri::ReductionParams params;
             params.link_length = tri::recommended_link_length(
                 std::sqrt(2.0) * side / n, std::sqrt(2.0) * 2 * half_plane / plane_n, eps, eps);

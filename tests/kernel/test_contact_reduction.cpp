@@ -8,6 +8,7 @@
 #include "geometry/point_triangle.h"
 #include "model/contact_force.h"
 #include "test_meshes.h"
+#include "triangle_contact_search.h"
 
 #include <gtest/gtest.h>
 
@@ -531,7 +532,7 @@ std::vector<TriangleContact> contacts_by(int source, const Mesh &a, const Mesh &
   opt.kernel = source == 1 ? tri::DistanceKernel::BruteForce : tri::DistanceKernel::Hybrid;
   tri::ContactStats stats;
   std::vector<TriangleContact> out;
-  tri::find_triangle_contacts(soa_of(a), kEps, soa_of(b), kEps, opt, out, stats);
+  tri_test::find_triangle_contacts(soa_of(a), kEps, soa_of(b), kEps, opt, out, stats);
   return out;
 }
 

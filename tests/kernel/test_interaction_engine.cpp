@@ -74,11 +74,10 @@ EngineRun evaluate_row(const std::vector<Particle> &ps, int threads) {
   const tri::InteractionSettings s = settings();
   const int n = static_cast<int>(ps.size());
   std::vector<std::vector<double>> history(n - 1, std::vector<double>(tri::kHistoryDoubles, 0.0));
-  engine.run(n - 1, threads,
-             [&](std::size_t k, tri::InteractionScratch &scratch, tri::ContactStats &stats) {
-               return tri::body_interaction(ps[k].body, ps[k + 1].body, s, 1e-6,
-                                            history[k].data(), scratch, stats);
-             });
+  engine.run(n - 1, threads, tri_test::body_pair_host([&](std::size_t k) {
+               return tri_test::BodyPairTask{&ps[k].body, &ps[k + 1].body, &s, 1e-6,
+                                             history[k].data(), {}};
+             }));
   EXPECT_FALSE(engine.failed());
   EngineRun out;
   for (std::size_t k = 0; k < engine.size(); ++k)
@@ -154,7 +153,7 @@ TEST(InteractionEngine, EveryTaskRunsOnceWhateverTheSchedule) {
       for (int repeat = 0; repeat < 2; ++repeat) { // the ranges are reset between runs
         for (std::atomic<int> &r : runs)
           r = 0;
-        engine.run(n, threads, [&](std::size_t k, tri::InteractionScratch &, tri::ContactStats &) {
+        engine.run(n, threads, tri_test::finished_task_host([&](std::size_t k) {
           ++runs[k];
           volatile double spin = 0.0; // uneven cost: the last tenth of the tasks is slow
           for (int i = 0; k >= n - n / 10 && i < 20000; ++i)
@@ -162,7 +161,7 @@ TEST(InteractionEngine, EveryTaskRunsOnceWhateverTheSchedule) {
           tri::PairForceResult r;
           r.force_a = Vector3d(double(k), 0.0, 0.0);
           return r;
-        });
+        }));
         ASSERT_EQ(engine.size(), n);
         for (std::size_t k = 0; k < n; ++k) {
           EXPECT_EQ(runs[k].load(), 1) << n << " tasks, " << threads << " threads, task " << k;
@@ -176,12 +175,12 @@ TEST(InteractionEngine, AppliesInAtomThenPartnerOrder) {
   tri::InteractionEngine engine;
   // Values whose sum depends on the order: 1e16 + 1 - 1e16 is 0 one way, 1 another.
   const double force[3] = {1.0, 1e16, -1e16};
-  engine.run(3, 1, [&](std::size_t k, tri::InteractionScratch &, tri::ContactStats &) {
+  engine.run(3, 1, tri_test::finished_task_host([&](std::size_t k) {
     tri::PairForceResult r;
     r.force_a = Vector3d(force[k], 0, 0);
     r.torque_b = Vector3d(0, force[k], 0);
     return r;
-  });
+  }));
   const long long partner[3] = {7, 3, 9};
   for (std::size_t k = 0; k < 3; ++k)
     engine.set_recipients(k, 0, partner[k], 1, partner[k]);
@@ -204,23 +203,23 @@ TEST(InteractionEngine, ExceptionsAreCaughtAndTheLowestFailingTaskIsNamed) {
   for (const int threads : {1, 3}) {
     tri::InteractionEngine engine;
     std::vector<int> evaluated(20, 0);
-    engine.run(20, threads, [&](std::size_t k, tri::InteractionScratch &, tri::ContactStats &) {
+    engine.run(20, threads, tri_test::finished_task_host([&](std::size_t k) {
       evaluated[k] = 1;
       if (k == 13 || k == 6)
         throw std::runtime_error("task " + std::to_string(k) + " broke");
       tri::PairForceResult r;
       r.contacts_after = 1;
       return r;
-    });
+    }));
     ASSERT_TRUE(engine.failed());
     EXPECT_EQ(engine.failed_task(), 6u);
     EXPECT_EQ(engine.failure(), "task 6 broke");
     for (int k = 0; k < 20; ++k)
       EXPECT_EQ(evaluated[k], 1) << "task " << k; // the others still ran
     // A later run without failures clears the verdict.
-    engine.run(2, threads, [](std::size_t, tri::InteractionScratch &, tri::ContactStats &) {
+    engine.run(2, threads, tri_test::finished_task_host([](std::size_t) {
       return tri::PairForceResult{};
-    });
+    }));
     EXPECT_FALSE(engine.failed());
   }
 }
@@ -231,9 +230,9 @@ TEST(BodyInteraction, SwappingTheBodiesNegatesTheForce) {
   tri::InteractionScratch scratch;
   tri::ContactStats stats;
   const tri::PairForceResult ab =
-      tri::body_interaction(ps[0].body, ps[1].body, s, 1e-6, nullptr, scratch, stats);
+      tri_test::body_interaction_alone(ps[0].body, ps[1].body, s, 1e-6, nullptr, scratch, stats);
   const tri::PairForceResult ba =
-      tri::body_interaction(ps[1].body, ps[0].body, s, 1e-6, nullptr, scratch, stats);
+      tri_test::body_interaction_alone(ps[1].body, ps[0].body, s, 1e-6, nullptr, scratch, stats);
   ASSERT_GT(ab.contacts_after, 0);
   EXPECT_LT((ab.force_a + ba.force_a).norm(), 1e-9 * ab.force_a.norm());
   EXPECT_LT((ab.torque_a - ba.torque_b).norm(), 1e-9 * (ab.torque_a.norm() + 1e-30));
@@ -287,7 +286,7 @@ TEST(BodyInteraction, WallVelocityIsTheRigidMotionsAtTheContact) {
   tri::InteractionScratch scratch;
   tri::ContactStats stats;
   const tri::PairForceResult r =
-      tri::body_interaction(p.body, wall, st, 1e-6, nullptr, scratch, stats);
+      tri_test::body_interaction_alone(p.body, wall, st, 1e-6, nullptr, scratch, stats);
   ASSERT_GT(r.contacts_after, 0);
   ASSERT_GT(r.force_a.z(), 0.0); // pushed up
   const Vector3d surface = omega.cross(Vector3d(0, 0, 0) - axis_point); // under the cube
@@ -342,7 +341,7 @@ TEST(InteractionEngine, ApplySumsEachAtomInPartnerThenTaskOrder) {
     }
   for (const int threads : {1, 3}) {
     tri::InteractionEngine engine;
-    engine.run(tasks, threads, [&](std::size_t k, tri::InteractionScratch &, tri::ContactStats &) {
+    engine.run(tasks, threads, tri_test::finished_task_host([&](std::size_t k) {
       tri::PairForceResult r;
       r.force_a = Vector3d(values[k][0], values[k][1], values[k][2]);
       r.torque_a = Vector3d(values[k][3], values[k][4], values[k][5]);
@@ -351,7 +350,7 @@ TEST(InteractionEngine, ApplySumsEachAtomInPartnerThenTaskOrder) {
         engine.set_recipients(k, static_cast<int>(names[k][0]), names[k][1],
                               static_cast<int>(names[k][2]), names[k][3]);
       return r;
-    });
+    }));
     for (int k = tasks - 1; k >= 0; --k)
       if (k % 2 == 1)
         engine.set_recipients(k, static_cast<int>(names[k][0]), names[k][1],

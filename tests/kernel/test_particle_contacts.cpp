@@ -4,6 +4,7 @@
 #include "contact/contact_reduction.h"
 #include "distance/particle_contacts.h"
 #include "test_particles.h"
+#include "triangle_contact_search.h"
 
 #include <gtest/gtest.h>
 #include <omp.h>
@@ -251,12 +252,11 @@ TEST(ParticleContacts, TightCullGivesTheBoxCullsContactsWithFewerPairs) {
 }
 
 // `parallel` shares a list among threads only from kMinSharedPairs candidates on: a short one
-// (a particle pair of small rocks) runs on the calling thread as ContactParallelism::None runs
-// it -- the hybrid queued with other pairs' kernels, kept lower bounds skipping what they rule
-// out -- on any thread count, so `parallel triangles` is not slower than `parallel none` on a
-// pile. Seen from outside: a short list whose kept bounds rule out every pair tests none of
-// them in every mode; a long one in a shared mode tests them all (the shared path does not
-// take bounds), with the contacts of ContactParallelism::None.
+// (a particle pair of small rocks) can be queued with other pairs' kernels, kept lower bounds
+// skipping what they rule out, on any thread count, so `parallel triangles` is not slower than
+// `parallel none` on a pile. Seen from outside: a short list whose kept bounds rule out every
+// pair, queued, tests none of them in every mode; a long one in a shared mode runs at once
+// and tests them all, with the contacts of ContactParallelism::None.
 TEST(ParticleContacts, OnlyLongListsAreSharedAmongThreads) {
   const int saved = omp_get_max_threads();
   omp_set_num_threads(2);
@@ -278,11 +278,17 @@ TEST(ParticleContacts, OnlyLongListsAreSharedAmongThreads) {
       opt.kernel = DistanceKernel::BatchedHybrid;
       EXPECT_FALSE(can_queue_candidates(opt, count)); // its batches decide: never queued
       opt.kernel = DistanceKernel::Hybrid;
-      ContactWorkspace ws;
       ContactStats stats;
-      std::vector<TriangleContact> out;
-      contacts_among_candidates(s.a, s.eps, s.b, s.eps, opt, all.data(), count, out, stats, ws,
-                                ruled_out.data(), 0.5);
+      if (shared) {
+        ContactWorkspace ws;
+        distances_among_candidates(s.a, s.eps, s.b, s.eps, opt, all.data(), count, stats, ws);
+      } else {
+        HybridJob job = queue_candidates(s.a, s.eps, s.b, s.eps, opt, all.data(), count, stats,
+                                         ruled_out.data(), 0.5);
+        std::vector<TrianglePairDistance> results(static_cast<std::size_t>(count));
+        job.out = results.data();
+        hybrid_distances_jobs(&job, 1, stats);
+      }
       EXPECT_EQ(stats.triangle_pairs_tested, shared ? count : 0)
           << "mode " << static_cast<int>(mode) << ", " << count << " candidates";
       // Without bounds every mode finds None's contacts, bit for bit.
@@ -301,6 +307,47 @@ TEST(ParticleContacts, OnlyLongListsAreSharedAmongThreads) {
       }
     }
   omp_set_num_threads(saved);
+}
+
+// The two ways to a body pair's kernel results (header): at once, and queued with the other
+// scenes' jobs in one run (as the interaction engine runs a group's): bitwise the same results
+// on every candidate, and the same counts.
+TEST(ParticleContacts, QueuedCandidatesGiveTheResultsOfARunAtOnce) {
+  const std::vector<Scene> &scenes = all_scenes();
+  ContactOptions opt;
+  std::vector<ContactWorkspace> found(scenes.size());
+  std::vector<HybridJob> jobs;
+  std::vector<std::vector<TrianglePairDistance>> queued(scenes.size());
+  ContactStats queued_stats, at_once_stats;
+  for (std::size_t k = 0; k < scenes.size(); ++k) {
+    const Scene &s = scenes[k];
+    const int count = find_candidate_pairs(s.a, s.b, 2 * s.eps, opt, found[k]);
+    ASSERT_TRUE(can_queue_candidates(opt, count));
+    jobs.push_back(
+        queue_candidates(s.a, s.eps, s.b, s.eps, opt, found[k].pairs.data(), count, queued_stats));
+    queued[k].resize(static_cast<std::size_t>(count));
+    jobs.back().out = queued[k].data();
+  }
+  hybrid_distances_jobs(jobs.data(), static_cast<int>(jobs.size()), queued_stats);
+  for (std::size_t k = 0; k < scenes.size(); ++k) {
+    const Scene &s = scenes[k];
+    ContactWorkspace ws;
+    const int count = jobs[k].count;
+    distances_among_candidates(s.a, s.eps, s.b, s.eps, opt, found[k].pairs.data(), count,
+                               at_once_stats, ws);
+    for (int p = 0; p < count; ++p) {
+      const TrianglePairDistance &x = ws.results[p], &y = queued[k][p];
+      EXPECT_TRUE(x.distance == y.distance && x.lower_bound == y.lower_bound &&
+                  x.point_a == y.point_a && x.point_b == y.point_b && x.normal == y.normal &&
+                  x.intersecting == y.intersecting)
+          << s.name << ", candidate " << p;
+    }
+    EXPECT_EQ(count_triangle_contacts(ws.results.data(), count, 2 * s.eps),
+              count_triangle_contacts(queued[k].data(), count, 2 * s.eps))
+        << s.name;
+  }
+  EXPECT_EQ(queued_stats.triangle_pairs_tested, at_once_stats.triangle_pairs_tested);
+  EXPECT_EQ(queued_stats.triangle_pairs_culled, at_once_stats.triangle_pairs_culled);
 }
 
 // The pair loop reduces the kernel's results in place (reduce_kernel_results) instead of the

@@ -8,6 +8,7 @@
 #include "interaction/body_interaction.h"
 #include "interaction/interaction_tally.h"
 
+#include "body_pair_helpers.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>
@@ -80,7 +81,8 @@ tri::PairForceResult interact(Solid &a, Solid &b) {
   b.body.triangles = &b.world;
   tri::InteractionScratch scratch;
   tri::ContactStats stats;
-  return tri::body_interaction(a.body, b.body, spring_only(), 1e-6, nullptr, scratch, stats);
+  return tri_test::body_interaction_alone(a.body, b.body, spring_only(), 1e-6, nullptr, scratch,
+                                          stats);
 }
 
 // Octasphere (its poles on the z axis) of radius kRadius whose south pole is `depth` below

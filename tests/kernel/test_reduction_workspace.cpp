@@ -6,6 +6,7 @@
 #include "contact/contact_reduction.h"
 #include "distance/particle_contacts.h"
 #include "test_meshes.h"
+#include "triangle_contact_search.h"
 
 #include <gtest/gtest.h>
 
@@ -41,11 +42,11 @@ Scene touching(const tri::TriangleMesh &a, const tri::TriangleMesh &b, const Vec
   for (double shift = 0.02; shift > -0.02; shift -= kEps / 3.0) {
     s.b = tri::to_soa(transformed(b, Eigen::Matrix3d::Identity(), shift * direction));
     s.contacts.clear();
-    tri::find_triangle_contacts(s.a, kEps, s.b, kEps, opt, s.contacts, stats);
+    tri_test::find_triangle_contacts(s.a, kEps, s.b, kEps, opt, s.contacts, stats);
     if (!s.contacts.empty()) {
       s.b = tri::to_soa(transformed(b, Eigen::Matrix3d::Identity(), (shift - kEps) * direction));
       s.contacts.clear();
-      tri::find_triangle_contacts(s.a, kEps, s.b, kEps, opt, s.contacts, stats);
+      tri_test::find_triangle_contacts(s.a, kEps, s.b, kEps, opt, s.contacts, stats);
       return s;
     }
   }

@@ -11,6 +11,7 @@
 #include "distance/particle_contacts.h"
 #include "distance/triangle_distance.h"
 #include "test_particles.h"
+#include "triangle_contact_search.h"
 
 #include <omp.h>
 
@@ -24,6 +25,7 @@
 #include <vector>
 
 using namespace tri;
+using tri_test::find_triangle_contacts;
 
 namespace {
 

@@ -11,9 +11,9 @@
 // The list holds every pair closer than cutoff + reach then (the cull keeps every pair closer
 // than its margin, triangle_boxes.h), so while D_a + D_b + slack < reach every pair now closer
 // than the cutoff is in it (pairs whose certified lower bound was already beyond cutoff + reach
-// are left out: they cannot be). The distance kernel treats each pair on its own (particle_contacts.h:
-// contacts_among_candidates), so the contacts are exactly those of a full search, bit for bit,
-// in the same order; only which pairs are tested beyond the cutoff differs.
+// are left out: they cannot be). The distance kernel treats each pair on its own
+// (particle_contacts.h), so the contacts are exactly those of a full search, bit for bit, in
+// the same order; only which pairs are tested beyond the cutoff differs.
 //
 // D of a rigid particle (world vertex R p + x, |p| <= bounding radius r in its body frame):
 //   D <= |x - x0| + |R - R0| r = |x - x0| + 2 sin(theta / 2) r,

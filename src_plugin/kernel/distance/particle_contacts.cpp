@@ -138,9 +138,9 @@ HybridSettings hybrid_settings(const ContactOptions &opt, double eps_a, double e
 
 void check_options(const ContactOptions &opt) {
   if (!penalty_iterations_supported(opt.newton_iterations))
-    throw std::invalid_argument("find_triangle_contacts: unsupported newton_iterations");
+    throw std::invalid_argument("distance kernel: unsupported newton_iterations");
   if (opt.batch_size < 1)
-    throw std::invalid_argument("find_triangle_contacts: batch_size must be >= 1");
+    throw std::invalid_argument("distance kernel: batch_size must be >= 1");
 }
 
 } // namespace
@@ -165,13 +165,11 @@ int find_candidate_pairs(const TriangleSoA &a, const TriangleSoA &b, double marg
   return collect_candidates(a, b, margin, opt.cull, opt.tight_cull, ws, skip_b);
 }
 
-void contacts_among_candidates(const TriangleSoA &a, double eps_a, const TriangleSoA &b,
-                               double eps_b, const ContactOptions &opt,
-                               const TrianglePairIndex *pairs, int count,
-                               std::vector<TriangleContact> &out, ContactStats &stats,
-                               ContactWorkspace &ws, const double *lower, double skip_from) {
+void distances_among_candidates(const TriangleSoA &a, double eps_a, const TriangleSoA &b,
+                                double eps_b, const ContactOptions &opt,
+                                const TrianglePairIndex *pairs, int count, ContactStats &stats,
+                                ContactWorkspace &ws) {
   check_options(opt);
-  const double cutoff = eps_a + eps_b;
   ws.tested = count;
   stats.triangle_pairs_tested += count;
   stats.triangle_pairs_culled +=
@@ -185,12 +183,7 @@ void contacts_among_candidates(const TriangleSoA &a, double eps_a, const Triangl
   const int unit = opt.kernel == DistanceKernel::BatchedHybrid ? opt.batch_size : kPairLanes;
   switch (shares_among_threads(opt, count) ? opt.parallel : ContactParallelism::None) {
   case ContactParallelism::None:
-    if (lower && can_queue_candidates(opt, count)) { // the one job queue_candidates would make
-      const HybridJob job{&a, &b, pairs, count, hs, results, lower, skip_from};
-      hybrid_distances_jobs(&job, 1, counters);
-    } else {
-      run_kernel(a, b, opt, hs, pairs, results, 0, count, counters);
-    }
+    run_kernel(a, b, opt, hs, pairs, results, 0, count, counters);
     break;
   case ContactParallelism::TrianglePairs: {
     const int units = (count + unit - 1) / unit;
@@ -229,7 +222,6 @@ void contacts_among_candidates(const TriangleSoA &a, double eps_a, const Triangl
   }
   }
   static_cast<HybridCounters &>(stats) += counters;
-  contacts_from_results(pairs, results, count, cutoff, out, stats);
 }
 
 bool shares_among_threads(const ContactOptions &opt, int count) {
@@ -269,20 +261,6 @@ int count_triangle_contacts(const TrianglePairDistance *results, int count, doub
   for (int k = 0; k < count; ++k)
     n += is_triangle_contact(results[k], cutoff);
   return n;
-}
-
-void find_triangle_contacts(const TriangleSoA &a, double eps_a, const TriangleSoA &b, double eps_b,
-                            const ContactOptions &opt, std::vector<TriangleContact> &out,
-                            ContactStats &stats, ContactWorkspace &ws, const std::uint8_t *skip_b) {
-  const int count = find_candidate_pairs(a, b, eps_a + eps_b, opt, ws, skip_b);
-  contacts_among_candidates(a, eps_a, b, eps_b, opt, ws.pairs.data(), count, out, stats, ws);
-}
-
-void find_triangle_contacts(const TriangleSoA &a, double eps_a, const TriangleSoA &b, double eps_b,
-                            const ContactOptions &opt, std::vector<TriangleContact> &out,
-                            ContactStats &stats) {
-  ContactWorkspace ws;
-  find_triangle_contacts(a, eps_a, b, eps_b, opt, out, stats, ws);
 }
 
 } // namespace tri

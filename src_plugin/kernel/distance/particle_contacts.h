@@ -32,6 +32,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace tri {
@@ -108,9 +109,9 @@ struct ContactStats : HybridCounters { // triangle_pairs_tested among HybridCoun
   ContactStats &operator+=(const ContactStats &o);
 };
 
-// Scratch of find_triangle_contacts, owned by the caller (one per thread), so that a call
-// allocates nothing once the buffers have grown. Holds no state that outlives a call.
-// `pairs` only grows (its first `count` entries are a call's), so it is not re-initialised.
+// Scratch of a body pair's search and kernel run (below), owned by the caller (one per thread),
+// so that a call allocates nothing once the buffers have grown. Holds no state that outlives a
+// call. `pairs` only grows (its first `count` entries are a call's), so it is not re-initialised.
 struct ContactWorkspace {
   TriangleBoxes boxes_a, boxes_b;
   CullScratch cull;
@@ -123,59 +124,56 @@ struct ContactWorkspace {
   std::size_t bytes() const; // heap memory held
 };
 
-// Appends to `out` every triangle pair of a and b with distance < eps_a + eps_b, sorted by
-// (tri_a, tri_b) so results do not depend on thread count; adds to `stats`.
-// Throws std::invalid_argument for an unsupported newton_iterations or batch_size < 1.
-// `skip_b` (optional, one entry per triangle of b): triangles of b the caller has proven
-// farther than eps_a + eps_b from all of a (body_interaction.h: wall triangles whose plane a
-// lies beyond); with the tight cull they are not searched. The result is the same.
-void find_triangle_contacts(const TriangleSoA &a, double eps_a, const TriangleSoA &b, double eps_b,
-                            const ContactOptions &opt, std::vector<TriangleContact> &out,
-                            ContactStats &stats, ContactWorkspace &ws,
-                            const std::uint8_t *skip_b = nullptr);
+// A body pair's contacts come from the distance kernel run on its candidate triangle pairs in
+// one of two ways, which give the same bits where both apply (the unbatched hybrid: each pair's
+// result depends neither on the other pairs in its list nor on the lists run beside it,
+// distance_kernels.h):
+// - at once: find_candidate_pairs, then distances_among_candidates (any kernel, any
+//   parallelism);
+// - queued: queue_candidates makes the unbatched hybrid's job, which the caller runs with other
+//   body pairs' jobs (hybrid_distances_jobs, interaction_engine.h) where can_queue_candidates.
+// Either way the pairs closer than eps_a + eps_b are the contacts (is_triangle_contact), sorted
+// by (tri_a, tri_b) as the candidates are, so that results do not depend on the thread count.
+// Both throw std::invalid_argument for an unsupported newton_iterations or batch_size < 1.
 
-// The two steps of the call above, for callers that keep candidates between steps
-// (candidate_cache.h). find_candidate_pairs fills ws.pairs[0, count) (returned) with the
-// triangle pairs the cull keeps for `margin` (every pair closer than margin is among them),
-// in row-major (tri_a, tri_b) order. contacts_among_candidates runs the distance kernel on
-// pairs[0, count) (row-major order, any superset of the pairs closer than eps_a + eps_b) and
-// appends those closer than eps_a + eps_b: each pair's result does not depend on the other
-// pairs in the list, so the contacts are the call above's, bit for bit. `lower`, `skip_from`
-// (optional): lower bounds on the pairs' distances, as HybridJob's (the hybrid kernel without
-// threads inside the pair skips the pairs they rule out; the other kernels run every pair).
+// Fills ws.pairs[0, count) (returned) with the triangle pairs the cull keeps for `margin`
+// (every pair closer than margin is among them), in row-major (tri_a, tri_b) order.
+// `skip_b` (optional, one entry per triangle of b): triangles of b the caller has proven
+// farther than `margin` from all of a (body_interaction.cpp: wall triangles whose plane a
+// lies beyond); with the tight cull they are not searched. The pairs are the same.
 int find_candidate_pairs(const TriangleSoA &a, const TriangleSoA &b, double margin,
                          const ContactOptions &opt, ContactWorkspace &ws,
                          const std::uint8_t *skip_b = nullptr);
-void contacts_among_candidates(const TriangleSoA &a, double eps_a, const TriangleSoA &b,
-                               double eps_b, const ContactOptions &opt,
-                               const TrianglePairIndex *pairs, int count,
-                               std::vector<TriangleContact> &out, ContactStats &stats,
-                               ContactWorkspace &ws, const double *lower = nullptr,
-                               double skip_from = std::numeric_limits<double>::infinity());
+// Runs the distance kernel on pairs[0, count) (row-major order, any superset of the pairs
+// closer than eps_a + eps_b) into ws.results[0, count) (ws.tested = count), and counts the
+// pairs tested and culled and the kernel's own counters into `stats`; the contacts are not
+// counted (the caller reads the results: count_triangle_contacts).
+void distances_among_candidates(const TriangleSoA &a, double eps_a, const TriangleSoA &b,
+                                double eps_b, const ContactOptions &opt,
+                                const TrianglePairIndex *pairs, int count, ContactStats &stats,
+                                ContactWorkspace &ws);
 
-// contacts_among_candidates in two halves, for callers that run the kernels of many body pairs
-// together (hybrid_distances_jobs, interaction_engine.h): queue_candidates counts the pairs in
-// `stats` and returns the hybrid job (its `out` left for the caller to point at `count`
-// results); after the run, contacts_from_results appends the pairs closer than eps_a + eps_b,
-// as contacts_among_candidates does. Only for the unbatched hybrid on lists that are not
-// shared among threads (can_queue_candidates); the contacts are bitwise
-// contacts_among_candidates'.
+// Whether `count` candidates can be queued: the unbatched hybrid (a batch's fallback depends on
+// its neighbours) on a list that is not shared among threads.
 bool can_queue_candidates(const ContactOptions &opt, int count);
 // Whether `count` candidates are shared among threads under opt.parallel (header, Threads).
 bool shares_among_threads(const ContactOptions &opt, int count);
-// How far above the exact distance a contact's distance from this kernel may lie (m): the
-// hybrid's certified tolerance, 0 for brute force, infinity for the unchecked penalty.
-double certified_tolerance(const ContactOptions &opt, double eps_a, double eps_b);
+// The hybrid job of distances_among_candidates on pairs[0, count), for a caller that runs it
+// with others; counts the pairs tested and culled into `stats` (the kernel's own counters are
+// the run's). Its `out` is left for the caller to point at `count` results. `lower`,
+// `skip_from` (optional): lower bounds on the pairs' distances (HybridJob's: kept candidates
+// skip the pairs they rule out; their results are +infinity, never contacts).
 HybridJob queue_candidates(const TriangleSoA &a, double eps_a, const TriangleSoA &b, double eps_b,
                            const ContactOptions &opt, const TrianglePairIndex *pairs, int count,
                            ContactStats &stats, const double *lower = nullptr,
                            double skip_from = std::numeric_limits<double>::infinity());
-void contacts_from_results(const TrianglePairIndex *pairs, const TrianglePairDistance *results,
-                           int count, double cutoff, std::vector<TriangleContact> &out,
-                           ContactStats &stats);
+// How far above the exact distance a contact's distance from this kernel may lie (m): the
+// hybrid's certified tolerance, 0 for brute force, infinity for the unchecked penalty.
+double certified_tolerance(const ContactOptions &opt, double eps_a, double eps_b);
+
 // Whether a kernel result is a triangle contact (closer than the cutoff), and how many of
-// `count` results are: the rule of contacts_from_results, for callers that read the results in
-// place (reduce_kernel_results).
+// `count` results are: the one rule, for contacts_from_results and for callers that read the
+// results in place (reduce_kernel_results).
 inline bool is_triangle_contact(const TrianglePairDistance &r, double cutoff) {
   return r.distance < cutoff;
 }
@@ -185,10 +183,10 @@ inline bool certified_exact(const TrianglePairDistance &r) { return r.lower_boun
 inline bool certified_apart(const TrianglePairDistance &r) {
   return !r.intersecting && r.lower_bound > 0.0;
 }
-
-// The same with a workspace of its own (allocates on every call: tests, tools, one-off uses).
-void find_triangle_contacts(const TriangleSoA &a, double eps_a, const TriangleSoA &b, double eps_b,
-                            const ContactOptions &opt, std::vector<TriangleContact> &out,
-                            ContactStats &stats);
+// Appends to `out` the TriangleContact of each of results[0, count) that is a contact, and
+// counts them into stats.contacts.
+void contacts_from_results(const TrianglePairIndex *pairs, const TrianglePairDistance *results,
+                           int count, double cutoff, std::vector<TriangleContact> &out,
+                           ContactStats &stats);
 
 } // namespace tri

@@ -57,36 +57,16 @@ std::size_t InteractionScratch::bytes() const {
   std::size_t ints = r.parent.capacity() + r.order.capacity() + r.label.capacity() +
                      r.cls.capacity() + r.absorbed.capacity() + r.seeds.capacity() +
                      r.alive.capacity() + r.group.capacity() + r.tally.capacity();
-  return distance.bytes() + triangle_contacts.capacity() * sizeof(TriangleContact) +
-         points.capacity() * sizeof(ContactPoint) +
-         records.capacity() * sizeof(ContactRecord) + r.raw.capacity() * sizeof(ReductionWorkspace::Raw) +
+  return distance.bytes() + points.capacity() * sizeof(ContactPoint) +
+         records.capacity() * sizeof(ContactRecord) +
+         r.raw.capacity() * sizeof(ReductionWorkspace::Raw) +
          r.keys.capacity() * sizeof(ReductionWorkspace::Key) +
          r.polygons.capacity() * sizeof(ContactPolygon) +
          r.points.capacity() * sizeof(Eigen::Vector3d) +
          (r.normals_a.capacity() + r.normals_b.capacity()) *
              sizeof(ReductionWorkspace::TriangleNormal) +
          ints * sizeof(int) + wall_apart.capacity() +
-         4 * wall_planes.n_x.capacity() * sizeof(double) + jobs.capacity() * sizeof(HybridJob) +
-         job_offsets.capacity() * sizeof(std::size_t) +
-         job_origins.capacity() * sizeof(JobOrigin) +
-         job_pairs.capacity() * sizeof(TrianglePairIndex) +
-         job_results.capacity() * sizeof(TrianglePairDistance);
-}
-
-void InteractionScratch::run_jobs(HybridCounters &stats) {
-  std::size_t total = 0;
-  job_offsets.resize(jobs.size());
-  for (std::size_t j = 0; j < jobs.size(); ++j) {
-    job_offsets[j] = total;
-    total += static_cast<std::size_t>(jobs[j].count);
-  }
-  job_results.resize(total);
-  for (std::size_t j = 0; j < jobs.size(); ++j) {
-    jobs[j].out = job_results.data() + job_offsets[j];
-    if (job_origins[j].pairs_offset >= 0) // job_pairs has stopped growing: pointers now
-      jobs[j].pairs = job_pairs.data() + job_origins[j].pairs_offset;
-  }
-  hybrid_distances_jobs(jobs.data(), static_cast<int>(jobs.size()), stats);
+         4 * wall_planes.n_x.capacity() * sizeof(double);
 }
 
 namespace {
@@ -165,42 +145,13 @@ bool walls_apart_by_planes(const TriangleSoA &particle, const TriangleSoA &wall,
   return n > 0 && apart == n;
 }
 
-} // namespace
-
-namespace {
-
-// What follows the distance kernel (`tested`: its results on all the pair's triangle pairs
-// `pairs`; the `num_contacts` of them closer than the cutoff are the triangle contacts, read in
-// place): the kept axis, the reduction, the force.
-PairForceResult after_kernel(const Body &a, const Body &b, const InteractionSettings &s,
-                             double dt, double *history, InteractionScratch &scratch,
-                             SeparationCache cache, const TrianglePairIndex *pairs,
-                             const TrianglePairDistance *tested, int num_tested, int num_contacts);
-
-// The second call for a pair whose job the engine ran (InteractionScratch::resume_job).
-PairForceResult resume_after_kernel(const Body &a, const Body &b, const InteractionSettings &s,
-                                    double dt, double *history, InteractionScratch &scratch,
-                                    ContactStats &stats, SeparationCache cache) {
-  const std::size_t j = static_cast<std::size_t>(scratch.resume_job);
-  const HybridJob &job = scratch.jobs[j];
-  const InteractionScratch::JobOrigin &origin = scratch.job_origins[j];
-  const TrianglePairDistance *results = scratch.job_results.data() + scratch.job_offsets[j];
-  const double cutoff = a.reach_epsilon(b) + b.reach_epsilon(a);
-  const int num_contacts = count_triangle_contacts(results, job.count, cutoff);
-  stats.contacts += num_contacts;
-  if (origin.keep)
-    cache.candidates->keep(&a.pose, *a.triangles, b.is_wall() ? nullptr : &b.pose, *b.triangles,
-                           cutoff, origin.reach, job.pairs, job.count, results);
-  else if (origin.pairs_offset < 0) // a kept list's
-    cache.candidates->rebase(&a.pose, *a.triangles, b.is_wall() ? nullptr : &b.pose,
-                             *b.triangles, results);
-  return after_kernel(a, b, s, dt, history, scratch, cache, job.pairs, results, job.count,
-                      num_contacts);
+// The distance between the two bodies' contact surfaces at which triangles count as touching:
+// each body's reach against the other.
+double contact_cutoff(const Body &a, const Body &b) {
+  return a.reach_epsilon(b) + b.reach_epsilon(a);
 }
 
-} // namespace
-
-namespace {
+const RigidPose *pose_of_b(const Body &b) { return b.is_wall() ? nullptr : &b.pose; }
 
 // A body whose extents come from its pose (a radius is what bounds its world coordinates).
 bool posed(const Body &body) { return body.frame && body.pose.radius > 0.0; }
@@ -241,16 +192,17 @@ double candidate_reach(const Body &a, const Body &b, double coherence, double cu
 bool proven_apart(const Body &a, const Body &b, const InteractionSettings &s,
                   SeparationCache cache) {
   // Only a pair with a kept axis can be proven apart: a gap is kept beside an axis and dropped
-  // with it (after_kernel), so most pairs in contact stop here, at the host's history values.
+  // with it (update_separation_cache), so most pairs in contact stop here, at the host's
+  // history values.
   if (!cache.axis || (cache.axis[0] == 0.0 && cache.axis[1] == 0.0 && cache.axis[2] == 0.0))
     return false;
-  const double cutoff = a.reach_epsilon(b) + b.reach_epsilon(a);
-  const RigidPose *pose_a = &a.pose, *pose_b = b.is_wall() ? nullptr : &b.pose;
+  const double cutoff = contact_cutoff(a, b);
+  const RigidPose *pose_a = &a.pose, *pose_b = pose_of_b(b);
   CandidateCache *kept = s.coherence > 0.0 ? cache.candidates : nullptr;
   // The travel proof (O(1) on the host's sums), then a gap kept from an earlier step that the
   // motion since cannot have closed (O(1); a rigid pose's triangles are not read), then the kept
   // axis (O(vertices)). A gap proven now is kept for the travel proof.
-  if (kept && kept->proves_apart_by_travel(cache.travel, cutoff))
+  if (proven_apart_by_travel(kept, cache.travel, cutoff))
     return true;
   double proven = 0.0;
   if (kept && kept->proves_apart(pose_a, *a.triangles, pose_b, *b.triangles, cutoff, &proven)) {
@@ -272,6 +224,10 @@ bool proven_apart(const Body &a, const Body &b, const InteractionSettings &s,
     keep_travel(a, b, *kept, cache.travel, gap);
   }
   return true;
+}
+
+bool proven_apart_by_travel(const CandidateCache *kept, const Travel &travel, double cutoff) {
+  return kept && kept->proves_apart_by_travel(travel, cutoff);
 }
 
 PairForceResult apart_result(const Body &a, const Body &b, const InteractionSettings &s,
@@ -297,111 +253,36 @@ PairForceResult apart_result(ContactStats &stats) {
   return PairForceResult{};
 }
 
-PairForceResult body_interaction(const Body &a, const Body &b, const InteractionSettings &s,
-                                 double dt, double *history, InteractionScratch &scratch,
-                                 ContactStats &stats, SeparationCache cache) {
-  if (scratch.resume_job >= 0)
-    return resume_after_kernel(a, b, s, dt, history, scratch, stats, cache);
-  const double cutoff = a.reach_epsilon(b) + b.reach_epsilon(a);
-  const RigidPose *pose_a = &a.pose, *pose_b = b.is_wall() ? nullptr : &b.pose;
-  CandidateCache *kept = s.coherence > 0.0 ? cache.candidates : nullptr;
-  auto apart = [&]() { return apart_result(a, b, s, dt, history, scratch, stats); };
-  if (!cache.not_apart && proven_apart(a, b, s, cache))
-    return apart();
-  // Kept candidates that still cover the bodies replace the search (candidate_cache.h).
-  const bool coherent =
-      kept && s.distance.cull && s.distance.kernel != DistanceKernel::BatchedHybrid;
-  scratch.triangle_contacts.clear();
-  if (coherent && cache.candidates->covers(pose_a, *a.triangles, pose_b, *b.triangles, cutoff)) {
-    ++stats.candidates_kept;
-    if (cache.update)
-      cache.candidates->note_use();
-    // The kernel skips the kept pairs the motion cannot have brought within the cutoff.
-    CandidateCache &kc = *cache.candidates;
-    const double skip = kc.skip_from(pose_a, *a.triangles, pose_b, *b.triangles, cutoff);
-    if (scratch.defer && can_queue_candidates(s.distance, kc.count())) {
-      scratch.jobs.push_back(queue_candidates(*a.triangles, a.reach_epsilon(b), *b.triangles,
-                                              b.reach_epsilon(a), s.distance, kc.pairs(),
-                                              kc.count(), stats, kc.lower_bounds(), skip));
-      scratch.job_origins.push_back({});
-      return PairForceResult{};
-    }
-    contacts_among_candidates(*a.triangles, a.reach_epsilon(b), *b.triangles, b.reach_epsilon(a),
-                              s.distance, kc.pairs(), kc.count(), scratch.triangle_contacts,
-                              stats, scratch.distance, kc.lower_bounds(), skip);
-    kc.rebase(pose_a, *a.triangles, pose_b, *b.triangles, scratch.distance.results.data());
-    return after_kernel(a, b, s, dt, history, scratch, cache, kc.pairs(),
-                        scratch.distance.results.data(), scratch.distance.tested,
-                        static_cast<int>(scratch.triangle_contacts.size()));
-  } else {
-    const bool keep = coherent && cache.update && cache.candidates->worth_keeping();
-    const double reach = keep ? candidate_reach(a, b, s.coherence, cutoff, dt) : 0.0;
-    const double margin = cutoff + reach;
-    // A wall patch: its triangles whose plane a lies beyond (either side) cannot touch a; if
-    // that is all of them, a touches nothing, also where no single axis separates a from the
-    // patch (a floor and a side wall around the particle).
-    const std::uint8_t *skip = nullptr;
-    if (b.is_wall() && s.distance.cull && s.distance.tight_cull) {
-      if (walls_apart_by_planes(*a.triangles, *b.triangles, cutoff, margin, scratch))
-        return apart();
-      skip = scratch.wall_apart.data();
-    }
-    const int count =
-        find_candidate_pairs(*a.triangles, *b.triangles, margin, s.distance, scratch.distance, skip);
-    if (count > 0 && scratch.defer && can_queue_candidates(s.distance, count)) {
-      // The search's list is overwritten by the next task's: a copy, pointed at in run_jobs.
-      const TrianglePairIndex *found = scratch.distance.pairs.data();
-      scratch.job_origins.push_back(
-          {static_cast<std::ptrdiff_t>(scratch.job_pairs.size()), keep, reach});
-      scratch.job_pairs.insert(scratch.job_pairs.end(), found, found + count);
-      scratch.jobs.push_back(queue_candidates(*a.triangles, a.reach_epsilon(b), *b.triangles,
-                                              b.reach_epsilon(a), s.distance, nullptr, count,
-                                              stats));
-      return PairForceResult{};
-    }
-    contacts_among_candidates(*a.triangles, a.reach_epsilon(b), *b.triangles, b.reach_epsilon(a),
-                              s.distance, scratch.distance.pairs.data(), count,
-                              scratch.triangle_contacts, stats, scratch.distance);
-    if (keep)
-      cache.candidates->keep(pose_a, *a.triangles, pose_b, *b.triangles, cutoff, reach,
-                             scratch.distance.pairs.data(), count, scratch.distance.results.data());
-  }
-  return after_kernel(a, b, s, dt, history, scratch, cache, scratch.distance.pairs.data(),
-                      scratch.distance.results.data(), scratch.distance.tested,
-                      static_cast<int>(scratch.triangle_contacts.size()));
-}
-
 namespace {
 
-PairForceResult after_kernel(const Body &a, const Body &b, const InteractionSettings &s,
-                             double dt, double *history, InteractionScratch &scratch,
-                             SeparationCache cache, const TrianglePairIndex *pairs,
-                             const TrianglePairDistance *tested, int num_tested,
-                             int num_contacts) {
-  const double cutoff = a.reach_epsilon(b) + b.reach_epsilon(a);
-  const RigidPose *pose_a = &a.pose, *pose_b = b.is_wall() ? nullptr : &b.pose;
+// The kept axis and gap after a search or a kept list has been run: a new axis (and gap) where
+// no triangle pair touches and one proves the gap, else none. `tested`: the kernel's results on
+// all `num_tested` candidates.
+void update_separation_cache(const Body &a, const Body &b, const InteractionSettings &s,
+                             SeparationCache cache, bool touching,
+                             const TrianglePairDistance *tested, int num_tested) {
+  if (!cache.axis || !cache.update)
+    return;
+  const double cutoff = contact_cutoff(a, b);
   CandidateCache *kept = s.coherence > 0.0 ? cache.candidates : nullptr;
-  const bool touching = num_contacts > 0;
-  if (cache.axis && cache.update) {
-    double gap = -std::numeric_limits<double>::infinity();
-    const Eigen::Vector3d axis = !touching
-                                     ? new_separating_axis(a, b, cutoff, tested, num_tested, gap)
-                                     : Eigen::Vector3d::Zero();
-    for (int d = 0; d < 3; ++d)
-      cache.axis[d] = axis[d];
-    if (kept && axis == Eigen::Vector3d::Zero())
-      kept->clear_gap();
-    if (kept && axis != Eigen::Vector3d::Zero()) {
-      const Eigen::Vector3d n = axis / axis.norm(); // the direction proven_gap projects on
-      kept->keep_gap(pose_a, *a.triangles, pose_b, *b.triangles, gap, n);
-      keep_travel(a, b, *kept, cache.travel, gap);
-    }
+  double gap = -std::numeric_limits<double>::infinity();
+  const Eigen::Vector3d axis = !touching
+                                   ? new_separating_axis(a, b, cutoff, tested, num_tested, gap)
+                                   : Eigen::Vector3d::Zero();
+  for (int d = 0; d < 3; ++d)
+    cache.axis[d] = axis[d];
+  if (kept && axis == Eigen::Vector3d::Zero())
+    kept->clear_gap();
+  if (kept && axis != Eigen::Vector3d::Zero()) {
+    const Eigen::Vector3d n = axis / axis.norm(); // the direction proven_gap projects on
+    kept->keep_gap(&a.pose, *a.triangles, pose_of_b(b), *b.triangles, gap, n);
+    keep_travel(a, b, *kept, cache.travel, gap);
   }
-  if (!touching) { // the reduction of nothing needs no parameters
-    scratch.points.clear();
-    return pair_contact_force(scratch.points, a.state, b.state, s.coefficients, dt, history);
-  }
+}
 
+// How the pair's triangle contacts become contact points (contact_reduction.h).
+ReductionParams reduction_params(const Body &a, const Body &b, const InteractionSettings &s,
+                                 bool classify) {
   ReductionParams params;
   params.method = s.reduction;
   params.link_length =
@@ -409,16 +290,34 @@ PairForceResult after_kernel(const Body &a, const Body &b, const InteractionSett
   params.min_width = std::min(a.min_edge, b.min_edge);
   params.reference_direction = reference_direction(a, b);
   params.distance_tolerance = certified_tolerance(s.distance, a.epsilon, b.epsilon);
-  params.classify = scratch.record_contacts;
-  // Smooth surfaces against walls only, for now: between two smooth balls the peak measured
-  // along each facet pair's bisector did not conserve energy (validation/contact/deep, pairs:
-  // e 0.976 undamped), so particle pairs keep their facets.
+  params.classify = classify;
+  // Smooth surfaces against walls only: between two smooth balls the peak measured along each
+  // facet pair's bisector did not conserve energy (validation/contact/deep, pairs: e 0.976
+  // undamped), so particle pairs keep their facets.
   if (b.is_wall()) {
     params.edge_bulge_a = a.edge_bulge;
     params.surface_lift = a.lift;
   }
-  reduce_kernel_results(pairs, tested, num_tested, cutoff, *a.triangles, a.epsilon, *b.triangles,
-                        b.epsilon, params, scratch.reduction, scratch.points);
+  return params;
+}
+
+// What follows the distance kernel (`tested`: its results on all the pair's triangle pairs
+// `pairs`; the `num_contacts` of them closer than the cutoff are the triangle contacts, read in
+// place): the kept axis, the reduction, the force.
+PairForceResult forces_from_contacts(const Body &a, const Body &b, const InteractionSettings &s,
+                                     double dt, double *history, InteractionScratch &scratch,
+                                     SeparationCache cache, const TrianglePairIndex *pairs,
+                                     const TrianglePairDistance *tested, int num_tested,
+                                     int num_contacts) {
+  const bool touching = num_contacts > 0;
+  update_separation_cache(a, b, s, cache, touching, tested, num_tested);
+  if (!touching) { // the reduction of nothing needs no parameters
+    scratch.points.clear();
+    return pair_contact_force(scratch.points, a.state, b.state, s.coefficients, dt, history);
+  }
+  const ReductionParams params = reduction_params(a, b, s, scratch.record_contacts);
+  reduce_kernel_results(pairs, tested, num_tested, contact_cutoff(a, b), *a.triangles, a.epsilon,
+                        *b.triangles, b.epsilon, params, scratch.reduction, scratch.points);
   const double layer = a.epsilon + b.epsilon;
   SurfaceSide side_a, side_b;
   side_b.wall = b.is_wall();
@@ -434,6 +333,118 @@ PairForceResult after_kernel(const Body &a, const Body &b, const InteractionSett
   return r;
 }
 
+// From the kernel's results on the pair's `count` candidates `pairs` (whoever ran it): the
+// contacts counted, the candidates kept or rebased, then the forces.
+PairForceResult forces_from_results(const Body &a, const Body &b, const InteractionSettings &s,
+                                    double dt, double *history, InteractionScratch &scratch,
+                                    ContactStats &stats, SeparationCache cache, CandidateList list,
+                                    double reach, const TrianglePairIndex *pairs,
+                                    const TrianglePairDistance *results, int count) {
+  const double cutoff = contact_cutoff(a, b);
+  const int num_contacts = count_triangle_contacts(results, count, cutoff);
+  stats.contacts += num_contacts;
+  if (list == CandidateList::kept)
+    cache.candidates->rebase(&a.pose, *a.triangles, pose_of_b(b), *b.triangles, results);
+  else if (list == CandidateList::searched_to_keep)
+    cache.candidates->keep(&a.pose, *a.triangles, pose_of_b(b), *b.triangles, cutoff, reach, pairs,
+                           count, results);
+  return forces_from_contacts(a, b, s, dt, history, scratch, cache, pairs, results, count,
+                              num_contacts);
+}
+
+// The kernel request for the pair's candidates pairs[0, count). `lower`, `skip_from`: kept
+// candidates' bounds (HybridJob).
+KernelRequest kernel_request(const Body &a, const Body &b, const InteractionSettings &s,
+                             ContactStats &stats, CandidateList list, double reach,
+                             const TrianglePairIndex *pairs, int count, const double *lower,
+                             double skip_from) {
+  return KernelRequest{queue_candidates(*a.triangles, a.reach_epsilon(b), *b.triangles,
+                                        b.reach_epsilon(a), s.distance, pairs, count, stats, lower,
+                                        skip_from),
+                       list, reach};
+}
+
+// The kernel run at once on the pair's candidates pairs[0, count), and the result. The kernels
+// that cannot be queued run every pair: kept bounds are of no use to them.
+PairForceResult run_kernel_at_once(const Body &a, const Body &b, const InteractionSettings &s,
+                                   double dt, double *history, InteractionScratch &scratch,
+                                   ContactStats &stats, SeparationCache cache, CandidateList list,
+                                   double reach, const TrianglePairIndex *pairs, int count) {
+  distances_among_candidates(*a.triangles, a.reach_epsilon(b), *b.triangles, b.reach_epsilon(a),
+                             s.distance, pairs, count, stats, scratch.distance);
+  return forces_from_results(a, b, s, dt, history, scratch, stats, cache, list, reach, pairs,
+                             scratch.distance.results.data(), count);
+}
+
+// The kept candidates of a pair whose list still covers the bodies (candidate_cache.h).
+PairPlan plan_kept_candidates(const Body &a, const Body &b, const InteractionSettings &s, double dt,
+                              double *history, InteractionScratch &scratch, ContactStats &stats,
+                              SeparationCache cache) {
+  CandidateCache &kept = *cache.candidates;
+  ++stats.candidates_kept;
+  if (cache.update)
+    kept.note_use();
+  // The kernel skips the kept pairs the motion cannot have brought within the cutoff.
+  const double skip =
+      kept.skip_from(&a.pose, *a.triangles, pose_of_b(b), *b.triangles, contact_cutoff(a, b));
+  if (can_queue_candidates(s.distance, kept.count()))
+    return kernel_request(a, b, s, stats, CandidateList::kept, 0.0, kept.pairs(), kept.count(),
+                          kept.lower_bounds(), skip);
+  return run_kernel_at_once(a, b, s, dt, history, scratch, stats, cache, CandidateList::kept, 0.0,
+                            kept.pairs(), kept.count());
+}
+
+// A fresh search: its candidates kept where `keep` (for a coherent pair worth it) with the
+// reach of candidate_reach.
+PairPlan plan_search(const Body &a, const Body &b, const InteractionSettings &s, double dt,
+                     double *history, InteractionScratch &scratch, ContactStats &stats,
+                     SeparationCache cache, bool keep) {
+  const double cutoff = contact_cutoff(a, b);
+  const double reach = keep ? candidate_reach(a, b, s.coherence, cutoff, dt) : 0.0;
+  const double margin = cutoff + reach;
+  // A wall patch: its triangles whose plane a lies beyond (either side) cannot touch a; if
+  // that is all of them, a touches nothing, also where no single axis separates a from the
+  // patch (a floor and a side wall around the particle).
+  const std::uint8_t *skip = nullptr;
+  if (b.is_wall() && s.distance.cull && s.distance.tight_cull) {
+    if (walls_apart_by_planes(*a.triangles, *b.triangles, cutoff, margin, scratch))
+      return apart_result(a, b, s, dt, history, scratch, stats);
+    skip = scratch.wall_apart.data();
+  }
+  const int count =
+      find_candidate_pairs(*a.triangles, *b.triangles, margin, s.distance, scratch.distance, skip);
+  const CandidateList list = keep ? CandidateList::searched_to_keep : CandidateList::searched;
+  const TrianglePairIndex *found = scratch.distance.pairs.data();
+  if (count > 0 && can_queue_candidates(s.distance, count))
+    return kernel_request(a, b, s, stats, list, reach, found, count, nullptr,
+                          std::numeric_limits<double>::infinity());
+  return run_kernel_at_once(a, b, s, dt, history, scratch, stats, cache, list, reach, found, count);
+}
+
 } // namespace
+
+PairPlan plan_body_pair(const Body &a, const Body &b, const InteractionSettings &s, double dt,
+                        double *history, InteractionScratch &scratch, ContactStats &stats,
+                        SeparationCache cache) {
+  // Kept candidates replace the search (candidate_cache.h); not with the batched kernel, whose
+  // result for a pair depends on its batch.
+  CandidateCache *kept = s.coherence > 0.0 ? cache.candidates : nullptr;
+  const bool coherent =
+      kept && s.distance.cull && s.distance.kernel != DistanceKernel::BatchedHybrid;
+  if (coherent &&
+      kept->covers(&a.pose, *a.triangles, pose_of_b(b), *b.triangles, contact_cutoff(a, b)))
+    return plan_kept_candidates(a, b, s, dt, history, scratch, stats, cache);
+  const bool keep = coherent && cache.update && kept->worth_keeping();
+  return plan_search(a, b, s, dt, history, scratch, stats, cache, keep);
+}
+
+PairForceResult finish_body_pair(const Body &a, const Body &b, const InteractionSettings &s,
+                                 double dt, double *history, InteractionScratch &scratch,
+                                 ContactStats &stats, SeparationCache cache,
+                                 const KernelRequest &request,
+                                 const TrianglePairDistance *results) {
+  return forces_from_results(a, b, s, dt, history, scratch, stats, cache, request.candidates,
+                             request.reach, request.job.pairs, results, request.job.count);
+}
 
 } // namespace tri

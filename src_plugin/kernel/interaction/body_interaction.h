@@ -1,8 +1,23 @@
 // One interaction between two bodies made of triangles (two particles, or a particle and a
 // patch of wall triangles): triangle-pair contacts (particle_contacts.h), their reduction to
 // contact points (contact_reduction.h) and the contact force law (contact_force.h), in the
-// order the paper's section 2 describes. The LIGGGHTS styles call only this, so the pair
-// style and the wall fix cannot drift apart.
+// order the paper's section 2 describes. The LIGGGHTS styles reach it only through the
+// interaction engine (interaction_engine.h), so the pair style and the wall fix cannot drift
+// apart.
+//
+// A body pair goes one way:
+// 1. proven_apart: the pair's kept state (travel, gap, axis) proves the bodies apart, and the
+//    pair takes apart_result. This is the only place that says a pair is apart without a
+//    search; hosts ask it before they build world-frame triangles.
+// 2. plan_body_pair, for a pair not proven apart: the search (or the kept candidates), and
+//    either a finished result (the wall planes prove the bodies apart, the search finds no
+//    candidates, or the kernel cannot be queued and runs at once) or a KernelRequest: the
+//    hybrid distance job over the pair's candidates.
+// 3. finish_body_pair, for a request: from the kernel's results on the job, the kept state,
+//    the reduction and the force.
+// Whoever runs a request's job, alone or beside other pairs' (hybrid_distances_jobs fills the
+// vector lanes across body pairs), finish_body_pair returns the same bits: each triangle pair's
+// result does not depend on the other pairs run with it.
 #pragma once
 
 #include "contact/contact_reduction.h"
@@ -14,6 +29,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <variant>
 #include <vector>
 
 namespace tri {
@@ -34,9 +50,6 @@ struct InteractionSettings {
 // and shrinks its vectors (their pointers are in the struct).
 struct alignas(64) InteractionScratch {
   ContactWorkspace distance;
-  // What contacts_among_candidates appends where a pair's kernel runs at once (not queued);
-  // the reduction reads the kernel's results in place (reduce_kernel_results).
-  std::vector<TriangleContact> triangle_contacts;
   std::vector<ContactPoint> points;
   // Where a host that asked (record_contacts) gets one ContactRecord per contact point of every
   // body pair evaluated with this scratch, appended in evaluation order (the engine keeps each
@@ -48,34 +61,6 @@ struct alignas(64) InteractionScratch {
   // Wall triangles proven apart from the particle by their own planes, and those planes.
   std::vector<std::uint8_t> wall_apart;
   TrianglePlanes wall_planes;
-  // Kernel work deferred by the engine (interaction_engine.h). While `defer` is set, a body
-  // pair that reaches the distance kernel (its kept candidates, or a search's) queues its
-  // hybrid job (queue_candidates) and returns at once with an empty result; the engine runs
-  // the queued jobs together (their first runs, retries and fallbacks fill the vector lanes
-  // across body pairs) and calls again with `resume_job` set to the pair's job, which goes on
-  // from the results exactly where the direct call would.
-  bool defer = false;
-  int resume_job = -1;
-  std::vector<HybridJob> jobs;
-  // Per job: where a search's candidates were copied (job_pairs; -1 for a kept list, which
-  // stays where it is), and whether the search keeps them, with what reach.
-  struct JobOrigin {
-    std::ptrdiff_t pairs_offset = -1;
-    bool keep = false;
-    double reach = 0.0;
-  };
-  std::vector<JobOrigin> job_origins;
-  std::vector<TrianglePairIndex> job_pairs;
-  std::vector<std::size_t> job_offsets; // job j's results: job_results[job_offsets[j]...]
-  std::vector<TrianglePairDistance> job_results;
-  // Runs the queued jobs (counters into `stats`); the results stay until the next clear_jobs.
-  void run_jobs(HybridCounters &stats);
-  void clear_jobs() {
-    jobs.clear();
-    job_origins.clear();
-    job_pairs.clear();
-    job_offsets.clear();
-  }
 
   std::size_t bytes() const; // heap memory held (approximate for the reduction's vectors)
 };
@@ -106,7 +91,7 @@ struct Body {
 
   bool is_wall() const { return !(state.mass > 0.0); }
   // The triangle search's reach against `other`, m: the lift counts against walls only
-  // (body_interaction.cpp after_kernel: particle pairs keep their facets).
+  // (body_interaction.cpp, reduction_params: particle pairs keep their facets).
   double reach_epsilon(const Body &other) const {
     return other.is_wall() ? epsilon + lift : epsilon;
   }
@@ -128,43 +113,81 @@ struct SeparationCache {
   double *axis = nullptr; // null: no cache kept
   bool update = true;     // false: read only (LIGGGHTS's setup of a run)
   CandidateCache *candidates = nullptr;
-  // The host has called proven_apart for this step and it returned false: not repeated.
-  bool not_apart = false;
   // Two particles' running motion sums (candidate_cache.h: Travel), where the host keeps them:
   // proven_apart tries the travel proof first, and every gap proven is kept for it.
   Travel travel = {};
 };
 
-// Forces between a (a particle) and b (a particle or a wall) for one time step of length dt.
-// `history` holds kHistoryDoubles values kept by the host for this pair (null for tangential
-// no_history). Statistics of the distance kernel are added to `stats`. The reference direction
-// of the reduction (contact_reduction.h: for intersecting triangles without a usable normal)
-// is the line of centres for two particles, and for a wall the direction from a's centre to
-// the closest point of the patch. Contacts whose real surfaces intersect get their depth through
-// the intersection (penetration_depth.h) before the force law; the result carries the combined
-// layer and the resolvable depth so that the host can stop a contact deeper than that.
-// `cache` as above (default: none; the result does not depend on it).
-PairForceResult body_interaction(const Body &a, const Body &b, const InteractionSettings &s,
-                                 double dt, double *history, InteractionScratch &scratch,
-                                 ContactStats &stats, SeparationCache cache = {});
-
-// body_interaction's first step, for a host that builds world-frame triangles only for the
-// pairs that need them: true when the kept gap (candidate_cache.h) or the kept axis proves a
-// and b apart. For bodies with a `frame` (particles) it reads their poses only, never
-// `triangles` (which may be stale); a wall patch's triangles are read. Keeps the gap as
-// body_interaction does (with cache.update). A pair proven apart takes apart_result(), exactly
-// body_interaction's result for it; any other pair goes through body_interaction with
-// cache.not_apart set (without it, the test is made again: it changes nothing when it fails).
+// Whether the kept state of the pair proves a and b apart: the travel proof, then the kept gap
+// (candidate_cache.h), then the kept axis. For bodies with a `frame` (particles) it reads their
+// poses only, never `triangles` (which may be stale); a wall patch's triangles are read. With
+// cache.update, a gap proven is kept (for the travel proof too). A pair proven apart takes
+// apart_result; any other goes to plan_body_pair (asking again changes nothing).
 bool proven_apart(const Body &a, const Body &b, const InteractionSettings &s,
                   SeparationCache cache);
-PairForceResult apart_result(const Body &a, const Body &b, const InteractionSettings &s,
-                             double dt, double *history, InteractionScratch &scratch,
-                             ContactStats &stats);
+// proven_apart's first proof alone, which reads neither body: the travel proof (candidate_cache.h,
+// Travel) of two particles with kept candidates `kept` (null: none kept), `cutoff` their
+// particle_pair_cutoff. For a host that passes over such pairs before it builds their bodies:
+// they change nothing, and count as apart_result(stats) would (InteractionTally::add_passed).
+bool proven_apart_by_travel(const CandidateCache *kept, const Travel &travel, double cutoff);
+// The distance below which the triangles of two particles with soft layers eps_a and eps_b
+// touch (Body::reach_epsilon: a surface lift counts against walls only).
+inline double particle_pair_cutoff(double eps_a, double eps_b) { return eps_a + eps_b; }
+// The result of a pair without contacts (proven apart, or a search that finds none): no force,
+// the history cleared. `history` as for plan_body_pair.
+PairForceResult apart_result(const Body &a, const Body &b, const InteractionSettings &s, double dt,
+                             double *history, InteractionScratch &scratch, ContactStats &stats);
 // apart_result for a pair whose history (as stored by the host, either orientation) is clear
 // or not kept: nothing to clear, so neither the history nor the coefficients are needed. Most
 // neighbour pairs of a pile are apart with a clear history; the host skips their view.
 bool apart_needs_nothing(const double *stored_history);
 PairForceResult apart_result(ContactStats &stats);
+
+// Which candidates a kernel request runs on, and what finish_body_pair does with them.
+enum class CandidateList {
+  kept,             // the pair's kept candidates (candidate_cache.h): rebased on the results
+  searched,         // a fresh search's (in scratch.distance.pairs until the next search)
+  searched_to_keep, // the same, kept afterwards with KernelRequest::reach
+};
+
+// The distance-kernel work of a body pair (plan_body_pair): the unbatched hybrid's job on its
+// candidates (particle_contacts.h: queue_candidates; the pairs tested and culled are counted
+// already). job.out is the runner's to point at job.count results. job.pairs points at the kept
+// candidates, or at the scratch's search list, which the next plan with that scratch
+// overwrites: a runner that plans other pairs first copies them (KernelQueue).
+struct KernelRequest {
+  HybridJob job;
+  CandidateList candidates = CandidateList::kept;
+  double reach = 0.0; // m, searched_to_keep only (candidate_reach)
+};
+
+// What plan_body_pair gives: the pair's result, or the kernel job that finish_body_pair needs.
+using PairPlan = std::variant<PairForceResult, KernelRequest>;
+
+// The forces between a (a particle) and b (a particle or a wall) for one time step of length
+// dt, up to the distance kernel, for a pair that proven_apart has not proven apart (it is not
+// asked again). `history` holds kHistoryDoubles values kept by the host for this pair (null
+// for tangential no_history). Statistics of the distance kernel are added to `stats`. The
+// reference direction of the reduction (contact_reduction.h: for intersecting triangles
+// without a usable normal) is the line of centres for two particles, and for a wall the
+// direction from a's centre to the closest point of the patch. Contacts whose real surfaces
+// intersect get their depth through the intersection (penetration_depth.h) before the force
+// law; the result carries the combined layer and the resolvable depth so that the host can
+// stop a contact deeper than that. `cache` as above (default: none; the result does not
+// depend on it). Where the kernel can be queued (can_queue_candidates) and there are
+// candidates, the outcome is a KernelRequest; else the kernel runs at once and the outcome is
+// the result.
+PairPlan plan_body_pair(const Body &a, const Body &b, const InteractionSettings &s, double dt,
+                        double *history, InteractionScratch &scratch, ContactStats &stats,
+                        SeparationCache cache = {});
+// The rest of the interaction that plan_body_pair requested `request` for, from `results`
+// (request.job.count of them, in its pairs' order): the same arguments as for the plan (the
+// history and kept state untouched in between), and the same bits as where the kernel runs at
+// once.
+PairForceResult finish_body_pair(const Body &a, const Body &b, const InteractionSettings &s,
+                                 double dt, double *history, InteractionScratch &scratch,
+                                 ContactStats &stats, SeparationCache cache,
+                                 const KernelRequest &request, const TrianglePairDistance *results);
 
 // The reach (m) a search keeps its candidates with: coherence x cutoff, or, for bodies that
 // move faster, what their relative motion covers in kCandidateSteps steps (translation plus

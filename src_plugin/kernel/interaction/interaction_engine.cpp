@@ -7,8 +7,8 @@ namespace tri {
 void InteractionEngine::prepare(std::size_t n, int threads) {
   if (static_cast<int>(scratch_.size()) < threads)
     scratch_.resize(threads);
-  if (static_cast<int>(deferred_.size()) < threads)
-    deferred_.resize(threads);
+  if (static_cast<int>(queues_.size()) < threads)
+    queues_.resize(threads);
   thread_stats_.assign(threads, ThreadStats{});
   // Every task writes its slot (record_failure those that throw): no fill of all of them.
   results_.resize(n);
@@ -165,8 +165,8 @@ std::size_t InteractionEngine::bytes() const {
                   record_ranges_.capacity() * sizeof(RecordRange);
   for (const InteractionScratch &s : scratch_)
     b += sizeof(s) + s.bytes();
-  for (const std::vector<long> &d : deferred_)
-    b += sizeof(d) + d.capacity() * sizeof(long);
+  for (const ThreadQueue &q : queues_)
+    b += sizeof(q) + q.kernels.bytes() + q.tasks.capacity() * sizeof(long);
   return b;
 }
 

@@ -2,28 +2,43 @@
 // of body-pair tasks evaluated on OpenMP threads, each thread with scratch of its own, errors
 // caught per task, results tallied and forces summed in an order that does not depend on the
 // thread count. A style keeps only what differs: where its tasks come from and what its second
-// body is (the `evaluate` callable).
+// body is (its host, below).
+//
+// Phases: tasks run in groups of consecutive ones (tasks_per_group: kGroupTasks, fewer on
+// several threads when tasks are few), on one thread each (the schedule: split_groups below).
+// Within a group the engine plans every task (body_interaction.h: plan_body_pair, through the
+// host); a plan is a finished result or a kernel request, which the engine queues
+// (kernel_queue.h). Then it runs the group's queued kernel jobs together (retries and
+// fallbacks fill the vector lanes across body pairs) and finishes each requesting task from its
+// results (finish_body_pair), in the order the requests were queued. The results are bitwise
+// those of each task run alone.
+//
+// The host, for each task k of [0, n), on the thread that runs it (`thread`: 0 to threads - 1):
+//   PairPlan plan(std::size_t k, int thread, InteractionScratch &, ContactStats &);
+//     the host's own per-task work (bodies built, proven_apart asked), then the pair's plan:
+//     an apart_result, or plan_body_pair's outcome;
+//   PairForceResult finish(std::size_t k, const KernelRequest &, const TrianglePairDistance
+//                          *results, InteractionScratch &, ContactStats &);
+//     for a task whose plan was a request: finish_body_pair with the same bodies and kept
+//     state as the plan (the request's pairs may have moved: use the one given);
+//   void complete(std::size_t k, PairForceResult &result);
+//     once the task's result is final, before it is stored: the host's bookkeeping of it.
+// The scratch is the thread's; the stats take the distance kernel's counters.
 //
 // Determinism: every task writes its result into its own slot; the tally is summed over the
 // slots in task order, and the per-atom sums in (atom, partner) order (stable: equal keys keep
 // the order they were contributed in), so the forces are bitwise the same for any thread count.
-// Errors: an exception thrown by `evaluate` does not leave the parallel region (it would end in
-// std::terminate); the engine keeps the message of the lowest failing task, and the host
-// reports it through its own error path after the loop, naming the bodies of that task.
-// Memory: scratch grows to the largest task seen and is kept (bytes() counts it).
-// Groups: tasks run in groups of consecutive ones (tasks_per_group: kGroupTasks, fewer on
-// several threads when tasks are few), on one thread each (the schedule: split_groups below).
-// Within a group, a task that reaches the distance kernel (kept candidates or a search's)
-// defers it (InteractionScratch::defer); the group's kernels run together
-// (hybrid_distances_jobs: retries and fallbacks fill the vector lanes across body pairs), then
-// those tasks are evaluated a second time and go on from their results. The results are
-// bitwise those of evaluating each task alone. `evaluate` must therefore be callable twice
-// for a task, giving body_interaction the same bodies (the hosts' callables read the step's
-// data and write only through body_interaction).
+// Errors: an exception thrown by the host or the kernel does not leave the parallel region (it
+// would end in std::terminate); a task that throws is not planned further, a kernel run that
+// throws fails every task of its group that requested it. The engine keeps the message of the
+// lowest failing task, and the host reports it through its own error path after the loop,
+// naming the bodies of that task.
+// Memory: scratch and queues grow to the largest task and group seen and are kept (bytes()).
 #pragma once
 
 #include "interaction/body_interaction.h"
 #include "interaction/interaction_tally.h"
+#include "interaction/kernel_queue.h"
 
 #include <algorithm>
 #include <atomic>
@@ -32,6 +47,7 @@
 #include <exception>
 #include <memory>
 #include <string>
+#include <variant>
 #include <vector>
 
 #ifdef _OPENMP
@@ -42,22 +58,11 @@ namespace tri {
 
 class InteractionEngine {
 public:
-  // Evaluates tasks [0, n): evaluate(k, scratch, stats) returns task k's PairForceResult,
-  // using `scratch` (this thread's) and adding the distance kernel's counters to `stats`.
-  // threads <= 1: the calling thread alone, no parallel region.
-  template <class Evaluate> void run(std::size_t n, int threads, Evaluate &&evaluate) {
-    run(n, threads, [](std::size_t, int) {}, evaluate);
-  }
-  // The same, with prepare(k, thread) called once for each task, on the thread that evaluates
-  // it (`thread`: its index, 0 to threads - 1), before its first evaluate call: the host's own
-  // per-task work (bodies built, pairs proven apart) then runs inside the engine's one parallel
-  // region, next to the evaluation that reads it, instead of in passes of its own (each a
-  // parallel region, or a serial loop, whose data the other core then has to fetch). An
-  // exception thrown by prepare fails the task as evaluate's would, and it is not evaluated.
-  template <class Prepare, class Evaluate>
-  void run(std::size_t n, int threads, Prepare &&prepare, Evaluate &&evaluate);
+  // Runs tasks [0, n) through `host` (header). threads <= 1: the calling thread alone, no
+  // parallel region.
+  template <class Host> void run(std::size_t n, int threads, Host &&host);
 
-  // Tasks per group: enough deferred kernels to fill the retry and fallback lanes and to fetch
+  // Tasks per group: enough queued kernels to fill the retry and fallback lanes and to fetch
   // the jobs' triangles well ahead (distance_kernels.cpp), few enough that a group's triangles
   // are still in cache when its tasks go on. Paired runs against 16: the formed hopper and the
   // settled pile 4-5 % faster at 32, 64 no better.
@@ -132,9 +137,14 @@ private:
   // it back and forth.
   struct alignas(64) ThreadStats : ContactStats {};
   std::vector<ThreadStats> thread_stats_;
-  std::vector<std::vector<long>> deferred_;  // per thread: the group's deferred tasks, by job
+  // One per thread: the group's kernel requests, and the task of each.
+  struct alignas(64) ThreadQueue {
+    KernelQueue kernels;
+    std::vector<long> tasks;
+  };
+  std::vector<ThreadQueue> queues_;
   std::vector<PairForceResult> results_;
-  std::vector<Recipients> recipients_;       // per task
+  std::vector<Recipients> recipients_; // per task
   bool record_ = false;
   struct RecordRange { // task k's records: scratch_[thread].records[begin, end)
     int thread = 0;
@@ -168,63 +178,86 @@ private:
   void prepare(std::size_t n, int threads);
   void record_failure(std::size_t k, const char *what);
   void finish();
+  // step() for task k, an exception failing the task.
+  template <class Step> void guarded(std::size_t k, Step &&step);
+  // Task k's final result, from `host` on `thread`, whose records since `recorded` are its own.
+  template <class Host>
+  void conclude(std::size_t k, int thread, std::size_t recorded, PairForceResult result,
+                Host &host);
+  template <class Host>
+  void run_group(long g, long group_tasks, long count, int thread, Host &host);
 };
 
-template <class Prepare, class Evaluate>
-void InteractionEngine::run(std::size_t n, int threads, Prepare &&prepare_task,
-                            Evaluate &&evaluate) {
+template <class Step> void InteractionEngine::guarded(std::size_t k, Step &&step) {
+  try {
+    step();
+  } catch (const std::exception &e) {
+    record_failure(k, e.what());
+  } catch (...) {
+    record_failure(k, "unknown exception");
+  }
+}
+
+template <class Host>
+void InteractionEngine::conclude(std::size_t k, int thread, std::size_t recorded,
+                                 PairForceResult result, Host &host) {
+  host.complete(k, result);
+  results_[k] = result;
+  if (record_)
+    record_ranges_[k] = {thread, static_cast<std::uint32_t>(recorded),
+                         static_cast<std::uint32_t>(scratch_[thread].records.size())};
+}
+
+template <class Host>
+void InteractionEngine::run_group(long g, long group_tasks, long count, int thread, Host &host) {
+  InteractionScratch &scratch = scratch_[thread];
+  ContactStats &stats = thread_stats_[thread];
+  ThreadQueue &queue = queues_[thread];
+  queue.kernels.clear();
+  queue.tasks.clear();
+  const long first = g * group_tasks, last = std::min(count, first + group_tasks);
+  for (long k = first; k < last; ++k)
+    guarded(k, [&] {
+      const std::size_t recorded = scratch.records.size();
+      PairPlan plan = host.plan(static_cast<std::size_t>(k), thread, scratch, stats);
+      if (const KernelRequest *request = std::get_if<KernelRequest>(&plan)) {
+        queue.kernels.add(*request);
+        queue.tasks.push_back(k);
+      } else {
+        conclude(k, thread, recorded, std::get<PairForceResult>(plan), host);
+      }
+    });
+  if (queue.kernels.empty())
+    return;
+  try {
+    queue.kernels.run(stats);
+  } catch (const std::exception &e) {
+    for (long k : queue.tasks)
+      record_failure(static_cast<std::size_t>(k), e.what());
+    return;
+  }
+  for (std::size_t j = 0; j < queue.tasks.size(); ++j) {
+    const long k = queue.tasks[j];
+    guarded(k, [&] {
+      const std::size_t recorded = scratch.records.size();
+      conclude(k, thread, recorded,
+               host.finish(static_cast<std::size_t>(k), queue.kernels.request(j),
+                           queue.kernels.results(j), scratch, stats),
+               host);
+    });
+  }
+}
+
+template <class Host> void InteractionEngine::run(std::size_t n, int threads, Host &&host) {
   if (threads < 1)
     threads = 1;
   prepare(n, threads);
   const long count = static_cast<long>(n);
-  auto one = [&](long k, int thread, bool first) {
-    try {
-      if (first)
-        prepare_task(static_cast<std::size_t>(k), thread);
-      const std::size_t recorded = scratch_[thread].records.size();
-      results_[k] = evaluate(static_cast<std::size_t>(k), scratch_[thread], thread_stats_[thread]);
-      if (record_) // a deferred first call records nothing; its resumed call overwrites this
-        record_ranges_[k] = {thread, static_cast<std::uint32_t>(recorded),
-                             static_cast<std::uint32_t>(scratch_[thread].records.size())};
-    } catch (const std::exception &e) {
-      record_failure(static_cast<std::size_t>(k), e.what());
-    } catch (...) {
-      record_failure(static_cast<std::size_t>(k), "unknown exception");
-    }
-  };
   const long group_tasks = tasks_per_group(count, threads);
-  auto group = [&](long g, int thread) {
-    InteractionScratch &scratch = scratch_[thread];
-    const long first = g * group_tasks, last = std::min(count, first + group_tasks);
-    scratch.clear_jobs();
-    deferred_[thread].clear();
-    scratch.defer = true;
-    for (long k = first; k < last; ++k) {
-      const std::size_t queued = scratch.jobs.size();
-      one(k, thread, true);
-      if (scratch.jobs.size() != queued)
-        deferred_[thread].push_back(k);
-    }
-    scratch.defer = false;
-    if (scratch.jobs.empty())
-      return;
-    try {
-      scratch.run_jobs(thread_stats_[thread]);
-    } catch (const std::exception &e) {
-      for (long k : deferred_[thread])
-        record_failure(static_cast<std::size_t>(k), e.what());
-      return;
-    }
-    for (std::size_t j = 0; j < deferred_[thread].size(); ++j) {
-      scratch.resume_job = static_cast<int>(j);
-      one(deferred_[thread][j], thread, false);
-    }
-    scratch.resume_job = -1;
-  };
   const long groups = (count + group_tasks - 1) / group_tasks;
   if (threads == 1) {
     for (long g = 0; g < groups; ++g)
-      group(g, 0);
+      run_group(g, group_tasks, count, 0, host);
   } else {
     split_groups(groups, threads);
 #pragma omp parallel num_threads(threads)
@@ -234,10 +267,10 @@ void InteractionEngine::run(std::size_t n, int threads, Prepare &&prepare_task,
       thread = omp_get_thread_num();
 #endif
       for (long g; (g = take_group(thread, thread)) >= 0;)
-        group(g, thread);
+        run_group(g, group_tasks, count, thread, host);
       for (int other = 1; other < threads; ++other)
         for (long g; (g = take_group((thread + other) % threads, thread)) >= 0;)
-          group(g, thread);
+          run_group(g, group_tasks, count, thread, host);
     }
   }
   finish();
