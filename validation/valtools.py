@@ -33,6 +33,21 @@ def deck_command(exe, deck, variables, log="none"):
     return cmd
 
 
+def stats_columns(tool, wanted=()):
+    """name -> 1-based column of compute tri/stats, from the tri-stats-columns program `tool`;
+    exits naming any of `wanted` that it lacks."""
+    out = subprocess.run([tool], capture_output=True, text=True, check=True).stdout
+    cols = {}
+    for line in out.splitlines():
+        f = line.split("\t")
+        if len(f) >= 2 and f[0].strip().isdigit():
+            cols[f[1].strip()] = int(f[0])
+    missing = [c for c in wanted if c not in cols]
+    if missing:
+        sys.exit(f"{tool} has no column {missing}")
+    return cols
+
+
 def run_deck(exe, deck, variables, cwd, screen, threads=1, exit_on_error=False):
     """Runs a deck (-log none, run_env) in cwd with its screen output in the file `screen`; returns
     the command (list); a failure raises CalledProcessError, or exits with a message if asked."""

@@ -47,6 +47,8 @@ import sys
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", ".."))
+import valtools  # noqa: E402
 REPO = os.path.abspath(os.path.join(HERE, "..", "..", ".."))
 DT = 2e-5
 T_FORM, T_SETTLE = 0.06, 0.3  # the pile: forming, settled
@@ -84,16 +86,7 @@ def stats_columns(tri):
     """name -> 1-based column of compute tri/stats, from tri-stats-columns beside the driver."""
     tool = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(tri))), "tools",
                         "tri-stats-columns")
-    out = subprocess.run([tool], capture_output=True, text=True, check=True).stdout
-    cols = {}
-    for line in out.splitlines():
-        f = line.split("\t")
-        if len(f) >= 2 and f[0].strip().isdigit():
-            cols[f[1].strip()] = int(f[0])
-    missing = [c for c in COUNTERS if c not in cols]
-    if missing:
-        sys.exit(f"{tool} has no column {missing}")
-    return cols
+    return valtools.stats_columns(tool, COUNTERS)
 
 
 def parse(text):
