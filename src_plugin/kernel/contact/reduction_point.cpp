@@ -1,0 +1,480 @@
+// Steps 4 to 6 of the reduction (README.md): one contact point per class.
+#include "contact/reduction_steps.h"
+#include "contact/smooth_peak.h"
+#include "distance/triangle_distance.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+
+namespace tri::reduction {
+namespace {
+
+// The member's contact polygon (header, step 5) if its triangles are nearly parallel and their
+// overlap has an area beyond rounding; false otherwise.
+bool member_polygon(const Raw &r, const Faces &faces, double layer, ContactPolygon &poly) {
+  const TriangleSoA &ta = *faces.a, &tb = *faces.b;
+  if (!r.maybe_parallel)
+    return false; // as contact_polygon would
+  if (!contact_polygon(ta.vertex(r.tri_a, 0), ta.vertex(r.tri_a, 1), ta.vertex(r.tri_a, 2),
+                       tb.vertex(r.tri_b, 0), tb.vertex(r.tri_b, 1), tb.vertex(r.tri_b, 2),
+                       r.normal, layer, poly))
+    return false;
+  return poly.weight > 0.0 && poly.area > kPatchAreaRounding * poly.min_triangle_area;
+}
+
+// A polygon member's overlap, exact: layer minus the brute-force distance of its two triangles
+// (triangle_distance.h, exact to rounding, where the hybrid kernel is exact to its tolerance);
+// the raw overlap of an intersecting or flipped (sunk) member, or of one whose distance the
+// kernel certified exact already (about a third of them, mostly brute-force fallbacks).
+double exact_overlap(const Raw &r, const Faces &faces, double layer) {
+  if (r.intersecting || r.overlap > layer || r.exact)
+    return r.overlap;
+  const TriangleSoA &ta = *faces.a, &tb = *faces.b;
+  const Vector3d a[3] = {ta.vertex(r.tri_a, 0), ta.vertex(r.tri_a, 1), ta.vertex(r.tri_a, 2)};
+  const Vector3d b[3] = {tb.vertex(r.tri_b, 0), tb.vertex(r.tri_b, 1), tb.vertex(r.tri_b, 2)};
+  if (r.apart) { // the same value (to rounding) without the intersection test
+    const double distance = separated_triangle_distance(a, b);
+    return distance < 0.0 ? r.overlap : layer - distance;
+  }
+  const TrianglePairDistance d = triangle_distance(a, b);
+  return d.intersecting ? r.overlap : layer - d.distance;
+}
+
+// Corner i's overlap for the deepest point (step 5b): the larger of the affine one and layer
+// minus its exact closest-point distance (contact_polygon.h) for a member that is separated
+// (`layer` > 0); the affine one for an intersecting or sunk member (`layer` < 0) and on the
+// layer's cut. Never below the affine one, so a polygon whose region reaches above the level
+// has a corner above it.
+double corner_overlap(const ContactPolygon &poly, double layer, int i) {
+  if (layer > 0.0 && poly.corner_distances[i] >= 0.0)
+    return std::max(poly.corner_overlaps[i], layer - poly.corner_distances[i]);
+  return poly.corner_overlaps[i];
+}
+
+// Step 5b, smooth surfaces: what smooth_surface_peak found.
+struct SmoothFound {
+  bool found = false;
+  double overlap = 0.0;
+  Vector3d point = Vector3d::Zero(), normal = Vector3d::UnitZ();
+};
+
+// Step 5b, smooth surfaces: the deepest point of the smooth surfaces that the two bodies' facets
+// sample (smooth_surface.h), over the class's nearly parallel members: each member's polygon,
+// clipped where the lifts may still reach (the layer widened by the lift), with the lifts of
+// its two facets (smooth_peak.h).
+SmoothFound smooth_surface_peak(const ContactClass &cc, const Faces &faces) {
+  SmoothFound best;
+  ContactPolygon poly;
+  const TriangleSoA &ta = *faces.a, &tb = *faces.b;
+  for (int i : cc.members) {
+    if (!cc.places(i))
+      continue;
+    const Raw &r = cc.raw[i];
+    if (!r.maybe_parallel)
+      continue;
+    const Vector3d a[3] = {ta.vertex(r.tri_a, 0), ta.vertex(r.tri_a, 1), ta.vertex(r.tri_a, 2)};
+    const Vector3d b[3] = {tb.vertex(r.tri_b, 0), tb.vertex(r.tri_b, 1), tb.vertex(r.tri_b, 2)};
+    if (!contact_polygon(a[0], a[1], a[2], b[0], b[1], b[2], r.normal, cc.layer + faces.lift,
+                         poly) ||
+        !(poly.area > kPatchAreaRounding * poly.min_triangle_area))
+      continue;
+    const SmoothPeak peak =
+        smooth_peak(poly, a, faces.bulge_a ? faces.bulge_a + 3 * r.tri_a : nullptr, b,
+                    faces.bulge_b ? faces.bulge_b + 3 * r.tri_b : nullptr, faces.lift);
+    if (!best.found || peak.overlap > best.overlap) {
+      best.found = true;
+      best.overlap = peak.overlap;
+      best.point = peak.point;
+      best.normal = peak.normal;
+    }
+  }
+  return best;
+}
+
+// The kernel's deepest point and normal (steps 4 and 5) over the class's members (plain_only:
+// those not deeper than D, the members without a polygon): the members within the taper of D,
+// weighted by their height in it, and the overlap-weighted normal of those tied with D.
+void kernel_deepest(const ContactClass &cc, double D, bool plain_only, double taper,
+                    const Vector3d &ref, Vector3d &point, Vector3d &normal) {
+  const std::vector<Raw> &raw = cc.raw;
+  const Raw &s = raw[cc.seed];
+  Vector3d sum_n = Vector3d::Zero(), sum_p = Vector3d::Zero();
+  double sum_wn = 0.0, sum_wp = 0.0;
+  for (int i : cc.members) {
+    if (cc.cls[i] != cc.id || cc.absorbed[i])
+      continue;
+    const Raw &r = raw[i];
+    if (plain_only && r.overlap > D)
+      continue; // a polygon member (deeper ones are polygon members by construction)
+    const double tied = 1.0 - (D - r.overlap) / taper;
+    if (tied > 0.0) {
+      sum_p += tied * r.point;
+      sum_wp += tied;
+    }
+    if (r.overlap >= D - kNormalDepthBand * cc.layer) {
+      sum_n += r.overlap * r.normal;
+      sum_wn += r.overlap;
+    }
+  }
+  point = sum_wp > 0.0 ? Vector3d(sum_p / sum_wp) : s.point;
+  const double len = sum_n.norm();
+  if (std::isfinite(len) && len > 1e-3 * sum_wn)
+    normal = sum_n / len;
+  else
+    normal = finite(s.normal) ? s.normal : ref;
+}
+
+} // namespace
+
+ContactPoint make_point(const ContactClass &cc, const Vector3d &ref, const Faces &faces,
+                        double tolerance, ReductionWorkspace &work) {
+  const std::vector<Raw> &raw = cc.raw;
+  const std::vector<int> &members = cc.members, &cls = cc.cls, &absorbed = cc.absorbed;
+  const int c = cc.id, seed = cc.seed;
+  const double layer = cc.layer;
+  ContactPoint p;
+  std::vector<ContactPolygon> &polygons = work.polygons;
+  std::vector<double> &polygon_exact = work.polygon_layers;
+  std::vector<int> &plain = work.plain;
+  // `polygons` only grows: entries [0, num_polygons) are this class's. Reusing the slots keeps
+  // emplace_back from zeroing a 3 KB ContactPolygon per member (value-initialisation).
+  std::size_t num_polygons = 0;
+  polygon_exact.clear();
+  plain.clear();
+  const Raw &s = raw[seed];
+  double deepest_plain = -std::numeric_limits<double>::infinity(); // members without a polygon
+  double D_poly = 0.0; // the polygon members' deepest overlap, exact (step 5b)
+  double plain_overlap = 0.0, member_overlap = 0.0; // step 5c: how much lies outside polygons
+  // A member's exact overlap lies at most `tolerance` above its kernel overlap (and never below
+  // it beyond rounding), so one that stays below the deepest exact one found so far by more
+  // than that cannot be the deepest: its triangle distance is not recomputed. The members come
+  // deepest first, so mostly only the first is.
+  const double exact_slack =
+      tolerance + 1e-9 * layer + 1e-13 * raw[seed].point.cwiseAbs().maxCoeff();
+  const double taper = kDeepestTaper * layer;
+  p.min_distance = std::numeric_limits<double>::infinity();
+  for (int i : members) {
+    if (cls[i] != c)
+      continue;
+    const Raw &r = raw[i];
+    p.min_distance = std::min(p.min_distance, r.distance);
+    p.intersecting = p.intersecting || r.intersecting;
+    ++p.num_merged;
+    if (absorbed[i])
+      continue; // rim contacts count, but neither place nor orient the contact
+    if (num_polygons == polygons.size())
+      polygons.emplace_back();
+    if (member_polygon(r, faces, layer, polygons[num_polygons])) { // filled in place
+      ++num_polygons;
+      polygon_exact.push_back(!(r.intersecting || r.overlap > layer) ? layer : -1.0);
+      if (!(r.overlap + exact_slack < D_poly))
+        D_poly = std::max(D_poly, exact_overlap(r, faces, layer));
+    } else {
+      deepest_plain = std::max(deepest_plain, r.overlap);
+      plain_overlap += std::max(0.0, r.overlap); // (< 0: facets only within the lifts' reach)
+      plain.push_back(i);
+    }
+    member_overlap += std::max(0.0, r.overlap);
+  }
+  p.tri_a = s.tri_a;
+  p.tri_b = s.tri_b;
+
+  // The deepest point of the smooth surfaces (smooth_surface.h): over every nearly parallel
+  // member, its polygon clipped where the lifts may still reach (o >= -lift).
+  SmoothFound smooth;
+  if (faces.bulge_a || faces.bulge_b)
+    smooth = smooth_surface_peak(cc, faces);
+  const Vector3d fallback_normal = finite(s.normal) ? s.normal : ref;
+  if (num_polygons == 0) {
+    const SmoothDeepest sd =
+        smooth_deepest(raw, plain, {taper, kNormalDepthBand * layer, kSameFeatureDistance * layer},
+                       s.point, fallback_normal, work.smooth_scratch, work.smooth_share);
+    p.point = sd.point;
+    p.normal = sd.normal;
+    p.overlap = sd.overlap * sd.normal_scale;
+    p.energy_overlap = sd.overlap;
+    if (smooth.found && smooth.overlap > sd.overlap) {
+      // No facet overlaps yet (or only at a clear angle): the smooth surfaces decide where they
+      // reach past the facets, fully from a taper on.
+      const double gain = smooth.overlap - sd.overlap;
+      const double t = smoothstep(gain / taper);
+      p.point += t * (smooth.point - p.point);
+      p.normal = (p.normal + t * (smooth.normal - p.normal)).normalized();
+      p.energy_overlap = smooth.overlap;
+      p.overlap = smooth.overlap * ((1.0 - t) * sd.normal_scale + t);
+    }
+    return p;
+  }
+
+  // Step 5b with polygons. Their deepest overlap and its region, exact functions of the two
+  // triangles (no kernel tolerance), moments relative to the seed's midpoint (near the patch:
+  // no digits lost far from the world origin).
+  // The level of the deepest region: the taper below the deepest corner (a corner is the
+  // deepest point of its polygon; where the closest points are an edge-edge pair inside the
+  // polygons the corners may lie below the exact D).
+  double deepest_corner = 0.0;
+  for (std::size_t k = 0; k < num_polygons; ++k)
+    deepest_corner = std::max(deepest_corner, polygons[k].max_overlap);
+  const double level = std::min(D_poly, deepest_corner) - taper;
+  double excess = 0.0;
+  Vector3d excess1 = Vector3d::Zero(), excess_normal = Vector3d::Zero();
+  double area = 0.0, weight = 0.0, weight2 = 0.0, facet_area = 0.0;
+  Vector3d area1 = Vector3d::Zero(), pressure1 = Vector3d::Zero(), area_normal = Vector3d::Zero();
+  Eigen::Matrix3d area2 = Eigen::Matrix3d::Zero();
+  Vector3d gradient1 = Vector3d::Zero();
+  double gradient2 = 0.0;
+  for (std::size_t k = 0; k < num_polygons; ++k) {
+    const ContactPolygon &poly = polygons[k];
+    // Each polygon's deepest region, tapered (continuous in the geometry): its weight is the
+    // excess of o over the level integrated over the polygon (mesh-independent), its point the
+    // polygon's corners above the level weighted by their excess -- the deepest corner itself
+    // when it alone is deepest (a vertex of a tilted face: exactly the point of the gradient of
+    // D), the middle of a tied edge when an edge lies flat (header, step 5b).
+    const ExcessIntegral e = excess_over(poly, level, s.point);
+    if (e.weight > 0.0) {
+      Vector3d corner_sum = Vector3d::Zero();
+      double corner_weight = 0.0;
+      for (int i = 0; i < poly.num_vertices; ++i) {
+        const double w = corner_overlap(poly, polygon_exact[k], i) - level;
+        if (w > 0.0) {
+          corner_sum += w * (poly.corner_points[i] - s.point);
+          corner_weight += w;
+        }
+      }
+      if (corner_weight > 0.0) {
+        excess += e.weight;
+        excess1 += e.weight * (corner_sum / corner_weight);
+      }
+    }
+    excess_normal += e.weight * poly.direction;
+    const Vector3d d = poly.area_centroid - s.point;
+    area += poly.area;
+    facet_area += poly.weight * poly.min_triangle_area;
+    weight += poly.weight;
+    weight2 += poly.weight2;
+    area1 += poly.area * d;
+    pressure1 += poly.weight * (poly.centroid - s.point);
+    area2 += poly.second_moment + poly.area * d * d.transpose();
+    area_normal += poly.area * poly.direction;
+    gradient1 += poly.area * poly.overlap_gradient;
+    gradient2 += poly.area * poly.overlap_gradient.squaredNorm();
+  }
+  // excess > 0: the deepest corner exceeds the level (its polygon has a region above it).
+  const Vector3d poly_deepest = excess > 0.0 ? Vector3d(s.point + excess1 / excess) : s.point;
+  const Vector3d poly_normal = area_normal.normalized(); // area > 0: never zero
+  const double excess_len = excess_normal.norm();
+  const Vector3d poly_deepest_normal =
+      excess_len > 0.0 ? Vector3d(excess_normal / excess_len) : poly_normal;
+  const double mean = weight / area, mean_square = weight2 / area;
+  // How uneven, over the patch or over a layer's width, whichever is wider: a polygon that
+  // shrinks to a sliver at a corner is uniform by its size alone, however steep its faces, and
+  // judged flat its energy (a mean over a region whose edges move) would lose the work of those
+  // edges: a tilted face's unevenness across a layer, slope x layer / 2, keeps it the deepest
+  // pair's. Wide patches are uneven over their own width first, so it changes nothing there.
+  const double unevenness = std::max(0.0, D_poly - mean);
+  const double slant = 0.5 * layer * (gradient1 / area).norm();
+  const double uneven_total = std::hypot(unevenness, slant);
+  const double r = uneven_total / (kFlatPatchBand * D_poly);
+  // dr/d(D - mean): the share of the unevenness that the patch's own overlaps carry.
+  const double uneven_share = uneven_total > 0.0 ? unevenness / uneven_total : 1.0;
+  const double beta = flat_blend(r);
+
+  // A body that samples a smooth surface (smooth_surface.h) is measured on it: the polygons'
+  // deepest point with the facets' lifts, which is D_poly where no lift reaches (flat facets,
+  // no smooth edge: nothing changes), and takes over the point and normal once it lies a taper
+  // above the facets' deepest corner.
+  const double smooth_gain = smooth.found ? std::max(0.0, smooth.overlap - D_poly) : 0.0;
+  const Vector3d smooth_point = smooth.found ? smooth.point : poly_deepest;
+  const Vector3d smooth_normal = smooth.found ? smooth.normal : poly_deepest_normal;
+  const double smooth_blend = smoothstep(smooth_gain / taper);
+  // Members without a polygon (a face's own rim seen edge-on, an edge at a clear angle) take
+  // over only where they are deeper than the polygons by more than the taper: within it they
+  // are the same closest points seen through the kernel's tolerance (step 5b).
+  const double D_surface = D_poly + smooth_gain;
+  const double plain_share = smoothstep((deepest_plain - D_surface - taper) / taper);
+  double D = D_surface;
+  Vector3d deepest = poly_deepest, deepest_normal;
+  if (smooth_blend > 0.0)
+    deepest += smooth_blend * (smooth_point - poly_deepest);
+  {
+    Vector3d kernel_point, kernel_normal;
+    kernel_deepest(cc, s.overlap, false, taper, ref, kernel_point, kernel_normal);
+    // Near flat the polygons orient the deepest point; from the band's end on, the kernel's
+    // closest points (the direction of the gradient of a tilted face's overlap).
+    deepest_normal = beta * poly_deepest_normal + (1.0 - beta) * kernel_normal;
+    if (smooth_blend > 0.0)
+      deepest_normal += smooth_blend * (smooth_normal - deepest_normal);
+    if (plain_share > 0.0) {
+      Vector3d plain_point, plain_normal;
+      kernel_deepest(cc, deepest_plain, true, taper, ref, plain_point, plain_normal);
+      D += plain_share * (deepest_plain - D_surface);
+      deepest += plain_share * (plain_point - deepest);
+      deepest_normal += plain_share * (plain_normal - deepest_normal);
+    }
+    deepest_normal.normalize();
+  }
+  p.point = deepest;
+  p.overlap = p.energy_overlap = D;
+  p.normal = deepest_normal;
+  const Vector3d mean_gradient = gradient1 / area;
+  const double spread = std::sqrt(std::max(0.0, gradient2 / area - mean_gradient.squaredNorm()));
+  // Step 5c: a curved patch (its overlap gradient turns over it) takes the peak of its moments
+  // instead of its deepest corner; w is how curved, times the estimate's validity.
+  const double curved_base = curved_weight(spread) * (1.0 - plain_share) * (1.0 - smooth_blend);
+  // Only a patch that spans many facets is a smooth surface seen through its facets: one or
+  // two facets (a vertex, an edge, a rock's corner) are the surface itself, and their deepest
+  // corner is its peak. Facets spanned by the polygons of step 5b: n = M1 / (D f), f their
+  // overlap-weighted smaller triangle area (continuous as polygons enter at o = 0; a
+  // paraboloid's n is half the facets under its area). n has a known gradient (dM1 =
+  // A do(c_A), dD = do(p_D), exact while the patch lies within the polygons' 10 degrees, as it
+  // does while n is small), so the blend's own gradient enters the force (below) and a ball
+  // passing through it keeps its energy.
+  const double facet_scale = weight > 0.0 ? facet_area / weight : 0.0;
+  const double facets = facet_scale > 0.0 && D > 0.0 ? weight / (D * facet_scale) : 0.0;
+  const double facets_u = (facets - kCurvedFacetsFrom) / (kCurvedFacetsFull - kCurvedFacetsFrom);
+  double w = 0.0, other_weights = 0.0;
+  CurvedPeak curved;
+  OverlapMoments mo;
+  Vector3d curved_area_centre = Vector3d::Zero(), curved_pressure_centre = Vector3d::Zero(),
+           curved_second_centre = Vector3d::Zero(), curved_normal = Vector3d::Zero();
+  if (curved_base > 0.0 && facets_u > 0.0) {
+    for (std::size_t k = 0; k < num_polygons; ++k)
+      add_overlap_moments(polygons[k], layer, deepest_normal, s.point, mo);
+    // A ball's cap reaches facets tilted past the 10 degrees of step 5b (at an overlap of
+    // 1.5 % of its radius): their polygons up to kCurvedFacetAngle enter the moments only.
+    // What is left without a polygon (a steep side, an edge's other face) cuts the patch off,
+    // and its moments' peak is not its own: it keeps the deepest corner.
+    ContactPolygon wide;
+    // (A member whose triangles are within that angle but whose polygon is empty -- a facet
+    // over one wall triangle seen through the next one's edge -- is no part of the field.)
+    for (int i : plain) {
+      const Raw &r = raw[i];
+      const TriangleSoA &ta = *faces.a, &tb = *faces.b;
+      if (!contact_polygon(ta.vertex(r.tri_a, 0), ta.vertex(r.tri_a, 1), ta.vertex(r.tri_a, 2),
+                           tb.vertex(r.tri_b, 0), tb.vertex(r.tri_b, 1), tb.vertex(r.tri_b, 2),
+                           r.normal, layer, wide, kCurvedFacetAngle))
+        continue;
+      plain_overlap -= r.overlap;
+      if (wide.weight > 0.0 && wide.area > kPatchAreaRounding * wide.min_triangle_area)
+        add_overlap_moments(wide, layer, deepest_normal, s.point, mo);
+    }
+    const double outside =
+        member_overlap > 0.0 ? std::max(0.0, plain_overlap) / member_overlap : 0.0;
+    // The angle between neighbouring facets, phi = h / R: a body's curvature 1 / R from how
+    // its normal turns over the patch's radius a (a sphere's cap: RMS deviation a /
+    // (sqrt(2) R)), the more curved of the two bodies, h the facets' size. A fine ball (a
+    // 20480-triangle icosphere: 0.04) is a smooth surface seen through facets; a coarse one
+    // (1280: 0.15) or a polyhedron's corner is its facets, whatever the depth (a coarse ball
+    // sunk deep spans many facets).
+    double facet_angle = 0.0;
+    if (mo.area > 0.0 && facet_scale > 0.0) {
+      const double turn_a = 1.0 - (mo.area_normal_a / mo.area).squaredNorm();
+      const double turn_b = 1.0 - (mo.area_normal / mo.area).squaredNorm();
+      const double spread_body = std::sqrt(std::max(0.0, std::max(turn_a, turn_b)));
+      const double radius = std::sqrt(mo.area / M_PI);
+      const double h = std::sqrt(4.0 * facet_scale / std::sqrt(3.0));
+      facet_angle = std::sqrt(2.0) * spread_body * h / radius;
+    }
+    const double fine = 1.0 - smoothstep((facet_angle - kCurvedFineAngle) / kCurvedFineAngle);
+    curved = curved_peak(mo.area, mo.m1, mo.m2, mo.m3);
+    other_weights =
+        curved_base * (1.0 - smoothstep(outside / kCurvedOutsideShare)) * curved.validity * fine;
+    w = other_weights * smoothstep(facets_u);
+    if (w > 0.0) {
+      curved_area_centre = s.point + mo.area1 / mo.area;
+      curved_pressure_centre = s.point + mo.first1 / mo.m1;
+      curved_second_centre = s.point + mo.second1 / mo.m2;
+      // The direction of the peak's gradient under translation (OverlapMoments).
+      const Vector3d n = curved.a_area * mo.area_normal / mo.area +
+                         curved.a_pressure * mo.m1_normal / mo.m1 +
+                         curved.a_second * mo.m2_normal / mo.m2;
+      const double len = n.norm();
+      curved_normal = std::isfinite(len) && len > 0.5 ? Vector3d(n / len) : deepest_normal;
+    }
+  }
+  if ((beta > 0.0 || w > 0.0) && plain_share < 1.0) {
+    // Energy 1/2 kn Omega, Omega = (1 - beta) X + beta Q, X = (1 - w) D^2 + w Phi^2, Q = mean
+    // square overlap, Phi the curved peak: its gradient acts along the normal at the deepest
+    // point, the area centre, the centre of pressure and the centroid of o^2 with the weights
+    // below (header, steps 5b and 5c).
+    const double b = beta * (1.0 - plain_share);
+    const double slope = flat_blend_slope(r) * (1.0 - plain_share);
+    const double phi = curved.peak;
+    const double x_law = (1.0 - w) * D * D + w * phi * phi;
+    const double q_minus = mean_square - x_law;
+    // d w = other_weights smoothstep'(u) du, u affine in n = M1 / (D f) (f held fixed).
+    double blend_area = 0.0, blend_deep = 0.0;
+    if (w > 0.0 && facets_u < 1.0) {
+      const double dw_dn = other_weights * 6.0 * facets_u * (1.0 - facets_u) /
+                           (kCurvedFacetsFull - kCurvedFacetsFrom);
+      const double jump = (1.0 - b) * (phi * phi - D * D) * dw_dn;
+      blend_area = jump * area / (D * facet_scale);
+      blend_deep = -jump * weight / (D * D * facet_scale);
+    }
+    const double a_deep =
+        2.0 * (1.0 - b) * (1.0 - w) * D +
+        q_minus * slope * (uneven_share - kFlatPatchBand * r) / (kFlatPatchBand * D) + blend_deep;
+    const double curved_scale = 2.0 * (1.0 - b) * w * phi;
+    const double a_area = -q_minus * slope * uneven_share / (kFlatPatchBand * D) + blend_area;
+    const double a_pressure = 2.0 * b * mean;
+    const Vector3d area_centre = s.point + area1 / area;
+    const Vector3d pressure_centre =
+        weight > 0.0 ? Vector3d(s.point + pressure1 / weight) : area_centre;
+    Vector3d moment = a_deep * deepest + a_area * area_centre + a_pressure * pressure_centre;
+    double sum = a_deep + a_area + a_pressure;
+    if (w > 0.0) {
+      moment += curved_scale *
+                (curved.a_area * curved_area_centre + curved.a_pressure * curved_pressure_centre +
+                 curved.a_second * curved_second_centre);
+      sum += curved_scale * (curved.a_area + curved.a_pressure + curved.a_second);
+    }
+    if (sum > 0.0) {
+      p.point = moment / sum;
+      // The slant's share of r changes with the faces' relative tilt, not with the overlap at
+      // any point: its part of Omega's gradient is a couple about n x g (g the mean overlap
+      // slope; a turn d(theta) of a against b changes |g| by -d(theta) . (m x g^)), carried by
+      // moving the force's point along g by (dOmega/d|g|) / sum (energy kn Omega / 2, force
+      // kn sum / 2).
+      const double slope_norm = (gradient1 / area).norm();
+      if (slant > 0.0 && slope_norm > 0.0) {
+        const double d_omega_d_slope =
+            q_minus * slope * (slant / uneven_total) / (kFlatPatchBand * D) * 0.5 * layer;
+        p.point += d_omega_d_slope / sum * (gradient1 / area) / slope_norm;
+      }
+      p.overlap = 0.5 * sum;
+      p.energy_overlap = std::sqrt(std::max(0.0, (1.0 - b) * x_law + b * mean_square));
+      const Vector3d point_normal =
+          w > 0.0 ? Vector3d((1.0 - w) * deepest_normal + w * curved_normal) : deepest_normal;
+      const Vector3d blended = (1.0 - b) * point_normal + b * poly_normal;
+      p.normal = blended.normalized();
+    }
+  }
+  p.face_weight = face_weight_of(spread, mean_gradient.norm()) * (1.0 - plain_share);
+  // Step 6: the patch's extent about the point. Parallel-axis theorem from s.point to p.point
+  // (q = p.point - s.point), then onto the contact plane.
+  const Vector3d q = p.point - s.point;
+  const Eigen::Matrix3d about_point =
+      area2 - area1 * q.transpose() - q * area1.transpose() + area * q * q.transpose();
+  const Eigen::Matrix3d plane = Eigen::Matrix3d::Identity() - p.normal * p.normal.transpose();
+  const Eigen::Matrix3d j = plane * about_point * plane;
+  p.patch_second_moment = 0.5 * (j + j.transpose());
+  p.patch_area = area;
+  p.damping_point = s.point + area1 / area;
+  // The mean distance of the patch from the point, over the same polygons, projected onto the
+  // contact plane (numerator and denominator alike). Only a face-like contact twists against
+  // its patch (contact_force.h), so a point-like one skips the integral (its asinh per edge).
+  DistanceIntegral dist;
+  for (std::size_t k = 0; p.face_weight > 0.0 && k < num_polygons; ++k) {
+    const ContactPolygon &poly = polygons[k];
+    const DistanceIntegral one =
+        polygon_distance_integral(poly.vertices, poly.num_vertices, p.point, p.normal);
+    dist.area += one.area;
+    dist.distance += one.distance;
+  }
+  p.patch_mean_radius = dist.area > 0.0 ? dist.distance / dist.area : 0.0;
+  return p;
+}
+
+} // namespace tri::reduction
