@@ -11,7 +11,7 @@
 namespace tri::reduction {
 namespace {
 
-// The member's contact polygon (header, step 5) if its triangles are nearly parallel and their
+// The member's contact polygon (step 5b) if its triangles are nearly parallel and their
 // overlap has an area beyond rounding; false otherwise.
 bool member_polygon(const Raw &r, const Faces &faces, double layer, ContactPolygon &poly) {
   const TriangleSoA &ta = *faces.a, &tb = *faces.b;
@@ -126,6 +126,90 @@ void kernel_deepest(const ContactClass &cc, double D, bool plain_only, double ta
     normal = finite(s.normal) ? s.normal : ref;
 }
 
+// Step 5: a class without polygons. Its point, normal and force from the smooth maximum of its
+// members' overlaps; where the smooth surfaces reach past the facets, theirs.
+void point_without_polygons(const ContactClass &cc, const SmoothFound &smooth,
+                            const Vector3d &fallback_normal, double taper, ReductionWorkspace &work,
+                            ContactPoint &p) {
+  const std::vector<Raw> &raw = cc.raw;
+  const std::vector<int> &plain = work.plain;
+  const double layer = cc.layer;
+  const Raw &s = raw[cc.seed];
+  const SmoothDeepest sd =
+      smooth_deepest(raw, plain, {taper, kNormalDepthBand * layer, kSameFeatureDistance * layer},
+                     s.point, fallback_normal, work.smooth_scratch, work.smooth_share);
+  p.point = sd.point;
+  p.normal = sd.normal;
+  p.overlap = sd.overlap * sd.normal_scale;
+  p.energy_overlap = sd.overlap;
+  if (smooth.found && smooth.overlap > sd.overlap) {
+    // No facet overlaps yet (or only at a clear angle): the smooth surfaces decide where they
+    // reach past the facets, fully from a taper on.
+    const double gain = smooth.overlap - sd.overlap;
+    const double t = smoothstep(gain / taper);
+    p.point += t * (smooth.point - p.point);
+    p.normal = (p.normal + t * (smooth.normal - p.normal)).normalized();
+    p.energy_overlap = smooth.overlap;
+    p.overlap = smooth.overlap * ((1.0 - t) * sd.normal_scale + t);
+  }
+}
+
+// Step 5b: the polygons' sums, relative to the seed's midpoint (near the patch: no digits
+// lost far from the world origin): their deepest region above `level`, and their integrals
+// (area m^2, weight = integral of o m^3, weight2 = integral of o^2 m^4).
+struct PolygonSums {
+  double excess = 0.0;
+  Vector3d excess1 = Vector3d::Zero(), excess_normal = Vector3d::Zero();
+  double area = 0.0, weight = 0.0, weight2 = 0.0, facet_area = 0.0;
+  Vector3d area1 = Vector3d::Zero(), pressure1 = Vector3d::Zero(), area_normal = Vector3d::Zero();
+  Eigen::Matrix3d area2 = Eigen::Matrix3d::Zero();
+  Vector3d gradient1 = Vector3d::Zero();
+  double gradient2 = 0.0;
+};
+
+PolygonSums sum_polygons(const std::vector<ContactPolygon> &polygons, std::size_t num_polygons,
+                         const std::vector<double> &polygon_exact, double level,
+                         const Vector3d &origin) {
+  PolygonSums t;
+  for (std::size_t k = 0; k < num_polygons; ++k) {
+    const ContactPolygon &poly = polygons[k];
+    // Each polygon's deepest region, tapered (continuous in the geometry): its weight is the
+    // excess of o over the level integrated over the polygon (mesh-independent), its point the
+    // polygon's corners above the level weighted by their excess -- the deepest corner itself
+    // when it alone is deepest (a vertex of a tilted face: exactly the point of the gradient of
+    // D), the middle of a tied edge when an edge lies flat (step 5b).
+    const ExcessIntegral e = excess_over(poly, level, origin);
+    if (e.weight > 0.0) {
+      Vector3d corner_sum = Vector3d::Zero();
+      double corner_weight = 0.0;
+      for (int i = 0; i < poly.num_vertices; ++i) {
+        const double w = corner_overlap(poly, polygon_exact[k], i) - level;
+        if (w > 0.0) {
+          corner_sum += w * (poly.corner_points[i] - origin);
+          corner_weight += w;
+        }
+      }
+      if (corner_weight > 0.0) {
+        t.excess += e.weight;
+        t.excess1 += e.weight * (corner_sum / corner_weight);
+      }
+    }
+    t.excess_normal += e.weight * poly.direction;
+    const Vector3d d = poly.area_centroid - origin;
+    t.area += poly.area;
+    t.facet_area += poly.weight * poly.min_triangle_area;
+    t.weight += poly.weight;
+    t.weight2 += poly.weight2;
+    t.area1 += poly.area * d;
+    t.pressure1 += poly.weight * (poly.centroid - origin);
+    t.area2 += poly.second_moment + poly.area * d * d.transpose();
+    t.area_normal += poly.area * poly.direction;
+    t.gradient1 += poly.area * poly.overlap_gradient;
+    t.gradient2 += poly.area * poly.overlap_gradient.squaredNorm();
+  }
+  return t;
+}
+
 } // namespace
 
 ContactPoint make_point(const ContactClass &cc, const Vector3d &ref, const Faces &faces,
@@ -188,23 +272,7 @@ ContactPoint make_point(const ContactClass &cc, const Vector3d &ref, const Faces
     smooth = smooth_surface_peak(cc, faces);
   const Vector3d fallback_normal = finite(s.normal) ? s.normal : ref;
   if (num_polygons == 0) {
-    const SmoothDeepest sd =
-        smooth_deepest(raw, plain, {taper, kNormalDepthBand * layer, kSameFeatureDistance * layer},
-                       s.point, fallback_normal, work.smooth_scratch, work.smooth_share);
-    p.point = sd.point;
-    p.normal = sd.normal;
-    p.overlap = sd.overlap * sd.normal_scale;
-    p.energy_overlap = sd.overlap;
-    if (smooth.found && smooth.overlap > sd.overlap) {
-      // No facet overlaps yet (or only at a clear angle): the smooth surfaces decide where they
-      // reach past the facets, fully from a taper on.
-      const double gain = smooth.overlap - sd.overlap;
-      const double t = smoothstep(gain / taper);
-      p.point += t * (smooth.point - p.point);
-      p.normal = (p.normal + t * (smooth.normal - p.normal)).normalized();
-      p.energy_overlap = smooth.overlap;
-      p.overlap = smooth.overlap * ((1.0 - t) * sd.normal_scale + t);
-    }
+    point_without_polygons(cc, smooth, fallback_normal, taper, work, p);
     return p;
   }
 
@@ -218,49 +286,15 @@ ContactPoint make_point(const ContactClass &cc, const Vector3d &ref, const Faces
   for (std::size_t k = 0; k < num_polygons; ++k)
     deepest_corner = std::max(deepest_corner, polygons[k].max_overlap);
   const double level = std::min(D_poly, deepest_corner) - taper;
-  double excess = 0.0;
-  Vector3d excess1 = Vector3d::Zero(), excess_normal = Vector3d::Zero();
-  double area = 0.0, weight = 0.0, weight2 = 0.0, facet_area = 0.0;
-  Vector3d area1 = Vector3d::Zero(), pressure1 = Vector3d::Zero(), area_normal = Vector3d::Zero();
-  Eigen::Matrix3d area2 = Eigen::Matrix3d::Zero();
-  Vector3d gradient1 = Vector3d::Zero();
-  double gradient2 = 0.0;
-  for (std::size_t k = 0; k < num_polygons; ++k) {
-    const ContactPolygon &poly = polygons[k];
-    // Each polygon's deepest region, tapered (continuous in the geometry): its weight is the
-    // excess of o over the level integrated over the polygon (mesh-independent), its point the
-    // polygon's corners above the level weighted by their excess -- the deepest corner itself
-    // when it alone is deepest (a vertex of a tilted face: exactly the point of the gradient of
-    // D), the middle of a tied edge when an edge lies flat (header, step 5b).
-    const ExcessIntegral e = excess_over(poly, level, s.point);
-    if (e.weight > 0.0) {
-      Vector3d corner_sum = Vector3d::Zero();
-      double corner_weight = 0.0;
-      for (int i = 0; i < poly.num_vertices; ++i) {
-        const double w = corner_overlap(poly, polygon_exact[k], i) - level;
-        if (w > 0.0) {
-          corner_sum += w * (poly.corner_points[i] - s.point);
-          corner_weight += w;
-        }
-      }
-      if (corner_weight > 0.0) {
-        excess += e.weight;
-        excess1 += e.weight * (corner_sum / corner_weight);
-      }
-    }
-    excess_normal += e.weight * poly.direction;
-    const Vector3d d = poly.area_centroid - s.point;
-    area += poly.area;
-    facet_area += poly.weight * poly.min_triangle_area;
-    weight += poly.weight;
-    weight2 += poly.weight2;
-    area1 += poly.area * d;
-    pressure1 += poly.weight * (poly.centroid - s.point);
-    area2 += poly.second_moment + poly.area * d * d.transpose();
-    area_normal += poly.area * poly.direction;
-    gradient1 += poly.area * poly.overlap_gradient;
-    gradient2 += poly.area * poly.overlap_gradient.squaredNorm();
-  }
+  const PolygonSums sums = sum_polygons(polygons, num_polygons, polygon_exact, level, s.point);
+  const double excess = sums.excess;
+  const Vector3d &excess1 = sums.excess1, &excess_normal = sums.excess_normal;
+  const double area = sums.area, weight = sums.weight, weight2 = sums.weight2,
+               facet_area = sums.facet_area;
+  const Vector3d &area1 = sums.area1, &pressure1 = sums.pressure1, &area_normal = sums.area_normal;
+  const Eigen::Matrix3d &area2 = sums.area2;
+  const Vector3d &gradient1 = sums.gradient1;
+  const double gradient2 = sums.gradient2;
   // excess > 0: the deepest corner exceeds the level (its polygon has a region above it).
   const Vector3d poly_deepest = excess > 0.0 ? Vector3d(s.point + excess1 / excess) : s.point;
   const Vector3d poly_normal = area_normal.normalized(); // area > 0: never zero
@@ -398,7 +432,7 @@ ContactPoint make_point(const ContactClass &cc, const Vector3d &ref, const Faces
     // Energy 1/2 kn Omega, Omega = (1 - beta) X + beta Q, X = (1 - w) D^2 + w Phi^2, Q = mean
     // square overlap, Phi the curved peak: its gradient acts along the normal at the deepest
     // point, the area centre, the centre of pressure and the centroid of o^2 with the weights
-    // below (header, steps 5b and 5c).
+    // below (steps 5b and 5c).
     const double b = beta * (1.0 - plain_share);
     const double slope = flat_blend_slope(r) * (1.0 - plain_share);
     const double phi = curved.peak;
