@@ -210,6 +210,74 @@ PolygonSums sum_polygons(const std::vector<ContactPolygon> &polygons, std::size_
   return t;
 }
 
+// Step 5b: how uneven a patch is (the flat-patch measure r and its blend beta), from its
+// polygons' sums and deepest overlap D_poly, and its mean and mean square overlap.
+struct FlatMeasure {
+  double mean, mean_square; // m, m^2
+  double slant;             // m, the mean overlap slope across half a layer
+  double uneven_total;      // m, hypot(D_poly - mean, slant)
+  double r, uneven_share, beta;
+};
+
+FlatMeasure flat_measure(const PolygonSums &t, double D_poly, double layer) {
+  FlatMeasure f;
+  f.mean = t.weight / t.area;
+  f.mean_square = t.weight2 / t.area;
+  // How uneven, over the patch or over a layer's width, whichever is wider: a polygon that
+  // shrinks to a sliver at a corner is uniform by its size alone, however steep its faces, and
+  // judged flat its energy (a mean over a region whose edges move) would lose the work of those
+  // edges: a tilted face's unevenness across a layer, slope x layer / 2, keeps it the deepest
+  // pair's. Wide patches are uneven over their own width first, so it changes nothing there.
+  const double unevenness = std::max(0.0, D_poly - f.mean);
+  f.slant = 0.5 * layer * (t.gradient1 / t.area).norm();
+  f.uneven_total = std::hypot(unevenness, f.slant);
+  f.r = f.uneven_total / (kFlatPatchBand * D_poly);
+  // dr/d(D - mean): the share of the unevenness that the patch's own overlaps carry.
+  f.uneven_share = f.uneven_total > 0.0 ? unevenness / f.uneven_total : 1.0;
+  f.beta = flat_blend(f.r);
+  return f;
+}
+
+// Step 5c: the members without a polygon whose triangles are within kCurvedFacetAngle: their
+// polygons' moments into `mo` (a ball's cap reaches facets tilted past step 5b's 10 degrees);
+// their overlaps come off `plain_overlap`. (A member within that angle whose polygon is empty --
+// a facet over one wall triangle seen through the next one's edge -- is no part of the field.)
+void add_wide_polygons(const ContactClass &cc, const Faces &faces, const Vector3d &normal,
+                       const std::vector<int> &plain, OverlapMoments &mo, double &plain_overlap) {
+  const double layer = cc.layer;
+  const Vector3d &origin = cc.raw[cc.seed].point;
+  ContactPolygon wide;
+  for (int i : plain) {
+    const Raw &r = cc.raw[i];
+    const TriangleSoA &ta = *faces.a, &tb = *faces.b;
+    if (!contact_polygon(ta.vertex(r.tri_a, 0), ta.vertex(r.tri_a, 1), ta.vertex(r.tri_a, 2),
+                         tb.vertex(r.tri_b, 0), tb.vertex(r.tri_b, 1), tb.vertex(r.tri_b, 2),
+                         r.normal, layer, wide, kCurvedFacetAngle))
+      continue;
+    plain_overlap -= r.overlap;
+    if (wide.weight > 0.0 && wide.area > kPatchAreaRounding * wide.min_triangle_area)
+      add_overlap_moments(wide, layer, normal, origin, mo);
+  }
+}
+
+// Step 5c: the angle between neighbouring facets, phi = h / R: a body's curvature 1 / R from
+// how its normal turns over the patch's radius a (a sphere's cap: RMS deviation
+// a / (sqrt(2) R)), the more curved of the two bodies, h the facets' size (facet_scale: their
+// area). A fine ball (a 20480-triangle icosphere: 0.04) is a smooth surface seen through
+// facets; a coarse one (1280: 0.15) or a polyhedron's corner is its facets, whatever the depth.
+double facet_angle_of(const OverlapMoments &mo, double facet_scale) {
+  double facet_angle = 0.0;
+  if (mo.area > 0.0 && facet_scale > 0.0) {
+    const double turn_a = 1.0 - (mo.area_normal_a / mo.area).squaredNorm();
+    const double turn_b = 1.0 - (mo.area_normal / mo.area).squaredNorm();
+    const double spread_body = std::sqrt(std::max(0.0, std::max(turn_a, turn_b)));
+    const double radius = std::sqrt(mo.area / M_PI);
+    const double h = std::sqrt(4.0 * facet_scale / std::sqrt(3.0));
+    facet_angle = std::sqrt(2.0) * spread_body * h / radius;
+  }
+  return facet_angle;
+}
+
 } // namespace
 
 ContactPoint make_point(const ContactClass &cc, const Vector3d &ref, const Faces &faces,
@@ -289,8 +357,7 @@ ContactPoint make_point(const ContactClass &cc, const Vector3d &ref, const Faces
   const PolygonSums sums = sum_polygons(polygons, num_polygons, polygon_exact, level, s.point);
   const double excess = sums.excess;
   const Vector3d &excess1 = sums.excess1, &excess_normal = sums.excess_normal;
-  const double area = sums.area, weight = sums.weight, weight2 = sums.weight2,
-               facet_area = sums.facet_area;
+  const double area = sums.area, weight = sums.weight, facet_area = sums.facet_area;
   const Vector3d &area1 = sums.area1, &pressure1 = sums.pressure1, &area_normal = sums.area_normal;
   const Eigen::Matrix3d &area2 = sums.area2;
   const Vector3d &gradient1 = sums.gradient1;
@@ -301,19 +368,10 @@ ContactPoint make_point(const ContactClass &cc, const Vector3d &ref, const Faces
   const double excess_len = excess_normal.norm();
   const Vector3d poly_deepest_normal =
       excess_len > 0.0 ? Vector3d(excess_normal / excess_len) : poly_normal;
-  const double mean = weight / area, mean_square = weight2 / area;
-  // How uneven, over the patch or over a layer's width, whichever is wider: a polygon that
-  // shrinks to a sliver at a corner is uniform by its size alone, however steep its faces, and
-  // judged flat its energy (a mean over a region whose edges move) would lose the work of those
-  // edges: a tilted face's unevenness across a layer, slope x layer / 2, keeps it the deepest
-  // pair's. Wide patches are uneven over their own width first, so it changes nothing there.
-  const double unevenness = std::max(0.0, D_poly - mean);
-  const double slant = 0.5 * layer * (gradient1 / area).norm();
-  const double uneven_total = std::hypot(unevenness, slant);
-  const double r = uneven_total / (kFlatPatchBand * D_poly);
-  // dr/d(D - mean): the share of the unevenness that the patch's own overlaps carry.
-  const double uneven_share = uneven_total > 0.0 ? unevenness / uneven_total : 1.0;
-  const double beta = flat_blend(r);
+  const FlatMeasure flat = flat_measure(sums, D_poly, layer);
+  const double mean = flat.mean, mean_square = flat.mean_square, slant = flat.slant,
+               uneven_total = flat.uneven_total, r = flat.r, uneven_share = flat.uneven_share,
+               beta = flat.beta;
 
   // A body that samples a smooth surface (smooth_surface.h) is measured on it: the polygons'
   // deepest point with the facets' lifts, which is D_poly where no lift reaches (flat facets,
@@ -380,37 +438,10 @@ ContactPoint make_point(const ContactClass &cc, const Vector3d &ref, const Faces
     // 1.5 % of its radius): their polygons up to kCurvedFacetAngle enter the moments only.
     // What is left without a polygon (a steep side, an edge's other face) cuts the patch off,
     // and its moments' peak is not its own: it keeps the deepest corner.
-    ContactPolygon wide;
-    // (A member whose triangles are within that angle but whose polygon is empty -- a facet
-    // over one wall triangle seen through the next one's edge -- is no part of the field.)
-    for (int i : plain) {
-      const Raw &r = raw[i];
-      const TriangleSoA &ta = *faces.a, &tb = *faces.b;
-      if (!contact_polygon(ta.vertex(r.tri_a, 0), ta.vertex(r.tri_a, 1), ta.vertex(r.tri_a, 2),
-                           tb.vertex(r.tri_b, 0), tb.vertex(r.tri_b, 1), tb.vertex(r.tri_b, 2),
-                           r.normal, layer, wide, kCurvedFacetAngle))
-        continue;
-      plain_overlap -= r.overlap;
-      if (wide.weight > 0.0 && wide.area > kPatchAreaRounding * wide.min_triangle_area)
-        add_overlap_moments(wide, layer, deepest_normal, s.point, mo);
-    }
+    add_wide_polygons(cc, faces, deepest_normal, plain, mo, plain_overlap);
     const double outside =
         member_overlap > 0.0 ? std::max(0.0, plain_overlap) / member_overlap : 0.0;
-    // The angle between neighbouring facets, phi = h / R: a body's curvature 1 / R from how
-    // its normal turns over the patch's radius a (a sphere's cap: RMS deviation a /
-    // (sqrt(2) R)), the more curved of the two bodies, h the facets' size. A fine ball (a
-    // 20480-triangle icosphere: 0.04) is a smooth surface seen through facets; a coarse one
-    // (1280: 0.15) or a polyhedron's corner is its facets, whatever the depth (a coarse ball
-    // sunk deep spans many facets).
-    double facet_angle = 0.0;
-    if (mo.area > 0.0 && facet_scale > 0.0) {
-      const double turn_a = 1.0 - (mo.area_normal_a / mo.area).squaredNorm();
-      const double turn_b = 1.0 - (mo.area_normal / mo.area).squaredNorm();
-      const double spread_body = std::sqrt(std::max(0.0, std::max(turn_a, turn_b)));
-      const double radius = std::sqrt(mo.area / M_PI);
-      const double h = std::sqrt(4.0 * facet_scale / std::sqrt(3.0));
-      facet_angle = std::sqrt(2.0) * spread_body * h / radius;
-    }
+    const double facet_angle = facet_angle_of(mo, facet_scale);
     const double fine = 1.0 - smoothstep((facet_angle - kCurvedFineAngle) / kCurvedFineAngle);
     curved = curved_peak(mo.area, mo.m1, mo.m2, mo.m3);
     other_weights =
