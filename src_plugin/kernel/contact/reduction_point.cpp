@@ -278,6 +278,96 @@ double facet_angle_of(const OverlapMoments &mo, double facet_scale) {
   return facet_angle;
 }
 
+// Step 5b's deepest overlap, point and normal, with the share of the members without a polygon.
+struct DeepestTerms {
+  double D;
+  const Vector3d &point, &normal, &poly_normal;
+  double plain_share;
+};
+// Step 5c's curved peak, its weight w and where its gradient acts.
+struct CurvedTerms {
+  double w, other_weights, facets_u, facet_scale;
+  const CurvedPeak &curved;
+  const Vector3d &area_centre, &pressure_centre, &second_centre, &normal;
+};
+
+// Energy 1/2 kn Omega, Omega = (1 - beta) X + beta Q, X = (1 - w) D^2 + w Phi^2, Q = mean
+// square overlap, Phi the curved peak: its gradient acts along the normal at the deepest point,
+// the area centre, the centre of pressure and the centroid of o^2 with the weights below (steps
+// 5b and 5c): p's point, overlap, energy_overlap and normal.
+void energy_point(const ContactClass &cc, const PolygonSums &sums, const FlatMeasure &flat,
+                  const DeepestTerms &dt, const CurvedTerms &ct, ContactPoint &p) {
+  const double layer = cc.layer;
+  const Raw &s = cc.raw[cc.seed];
+  const double area = sums.area, weight = sums.weight;
+  const Vector3d &area1 = sums.area1, &pressure1 = sums.pressure1, &gradient1 = sums.gradient1;
+  const double mean = flat.mean, mean_square = flat.mean_square, slant = flat.slant,
+               uneven_total = flat.uneven_total, r = flat.r, uneven_share = flat.uneven_share,
+               beta = flat.beta;
+  const double D = dt.D, plain_share = dt.plain_share;
+  const Vector3d &deepest = dt.point, &deepest_normal = dt.normal, &poly_normal = dt.poly_normal;
+  const double w = ct.w, other_weights = ct.other_weights, facets_u = ct.facets_u,
+               facet_scale = ct.facet_scale;
+  const CurvedPeak &curved = ct.curved;
+  const Vector3d &curved_area_centre = ct.area_centre, &curved_pressure_centre = ct.pressure_centre,
+                 &curved_second_centre = ct.second_centre, &curved_normal = ct.normal;
+  // Energy 1/2 kn Omega, Omega = (1 - beta) X + beta Q, X = (1 - w) D^2 + w Phi^2, Q = mean
+  // square overlap, Phi the curved peak: its gradient acts along the normal at the deepest
+  // point, the area centre, the centre of pressure and the centroid of o^2 with the weights
+  // below (steps 5b and 5c).
+  const double b = beta * (1.0 - plain_share);
+  const double slope = flat_blend_slope(r) * (1.0 - plain_share);
+  const double phi = curved.peak;
+  const double x_law = (1.0 - w) * D * D + w * phi * phi;
+  const double q_minus = mean_square - x_law;
+  // d w = other_weights smoothstep'(u) du, u affine in n = M1 / (D f) (f held fixed).
+  double blend_area = 0.0, blend_deep = 0.0;
+  if (w > 0.0 && facets_u < 1.0) {
+    const double dw_dn =
+        other_weights * 6.0 * facets_u * (1.0 - facets_u) / (kCurvedFacetsFull - kCurvedFacetsFrom);
+    const double jump = (1.0 - b) * (phi * phi - D * D) * dw_dn;
+    blend_area = jump * area / (D * facet_scale);
+    blend_deep = -jump * weight / (D * D * facet_scale);
+  }
+  const double a_deep =
+      2.0 * (1.0 - b) * (1.0 - w) * D +
+      q_minus * slope * (uneven_share - kFlatPatchBand * r) / (kFlatPatchBand * D) + blend_deep;
+  const double curved_scale = 2.0 * (1.0 - b) * w * phi;
+  const double a_area = -q_minus * slope * uneven_share / (kFlatPatchBand * D) + blend_area;
+  const double a_pressure = 2.0 * b * mean;
+  const Vector3d area_centre = s.point + area1 / area;
+  const Vector3d pressure_centre =
+      weight > 0.0 ? Vector3d(s.point + pressure1 / weight) : area_centre;
+  Vector3d moment = a_deep * deepest + a_area * area_centre + a_pressure * pressure_centre;
+  double sum = a_deep + a_area + a_pressure;
+  if (w > 0.0) {
+    moment += curved_scale *
+              (curved.a_area * curved_area_centre + curved.a_pressure * curved_pressure_centre +
+               curved.a_second * curved_second_centre);
+    sum += curved_scale * (curved.a_area + curved.a_pressure + curved.a_second);
+  }
+  if (sum > 0.0) {
+    p.point = moment / sum;
+    // The slant's share of r changes with the faces' relative tilt, not with the overlap at
+    // any point: its part of Omega's gradient is a couple about n x g (g the mean overlap
+    // slope; a turn d(theta) of a against b changes |g| by -d(theta) . (m x g^)), carried by
+    // moving the force's point along g by (dOmega/d|g|) / sum (energy kn Omega / 2, force
+    // kn sum / 2).
+    const double slope_norm = (gradient1 / area).norm();
+    if (slant > 0.0 && slope_norm > 0.0) {
+      const double d_omega_d_slope =
+          q_minus * slope * (slant / uneven_total) / (kFlatPatchBand * D) * 0.5 * layer;
+      p.point += d_omega_d_slope / sum * (gradient1 / area) / slope_norm;
+    }
+    p.overlap = 0.5 * sum;
+    p.energy_overlap = std::sqrt(std::max(0.0, (1.0 - b) * x_law + b * mean_square));
+    const Vector3d point_normal =
+        w > 0.0 ? Vector3d((1.0 - w) * deepest_normal + w * curved_normal) : deepest_normal;
+    const Vector3d blended = (1.0 - b) * point_normal + b * poly_normal;
+    p.normal = blended.normalized();
+  }
+}
+
 } // namespace
 
 ContactPoint make_point(const ContactClass &cc, const Vector3d &ref, const Faces &faces,
@@ -358,7 +448,7 @@ ContactPoint make_point(const ContactClass &cc, const Vector3d &ref, const Faces
   const double excess = sums.excess;
   const Vector3d &excess1 = sums.excess1, &excess_normal = sums.excess_normal;
   const double area = sums.area, weight = sums.weight, facet_area = sums.facet_area;
-  const Vector3d &area1 = sums.area1, &pressure1 = sums.pressure1, &area_normal = sums.area_normal;
+  const Vector3d &area1 = sums.area1, &area_normal = sums.area_normal;
   const Eigen::Matrix3d &area2 = sums.area2;
   const Vector3d &gradient1 = sums.gradient1;
   const double gradient2 = sums.gradient2;
@@ -369,9 +459,7 @@ ContactPoint make_point(const ContactClass &cc, const Vector3d &ref, const Faces
   const Vector3d poly_deepest_normal =
       excess_len > 0.0 ? Vector3d(excess_normal / excess_len) : poly_normal;
   const FlatMeasure flat = flat_measure(sums, D_poly, layer);
-  const double mean = flat.mean, mean_square = flat.mean_square, slant = flat.slant,
-               uneven_total = flat.uneven_total, r = flat.r, uneven_share = flat.uneven_share,
-               beta = flat.beta;
+  const double beta = flat.beta;
 
   // A body that samples a smooth surface (smooth_surface.h) is measured on it: the polygons'
   // deepest point with the facets' lifts, which is D_poly where no lift reaches (flat facets,
@@ -459,63 +547,11 @@ ContactPoint make_point(const ContactClass &cc, const Vector3d &ref, const Faces
       curved_normal = std::isfinite(len) && len > 0.5 ? Vector3d(n / len) : deepest_normal;
     }
   }
-  if ((beta > 0.0 || w > 0.0) && plain_share < 1.0) {
-    // Energy 1/2 kn Omega, Omega = (1 - beta) X + beta Q, X = (1 - w) D^2 + w Phi^2, Q = mean
-    // square overlap, Phi the curved peak: its gradient acts along the normal at the deepest
-    // point, the area centre, the centre of pressure and the centroid of o^2 with the weights
-    // below (steps 5b and 5c).
-    const double b = beta * (1.0 - plain_share);
-    const double slope = flat_blend_slope(r) * (1.0 - plain_share);
-    const double phi = curved.peak;
-    const double x_law = (1.0 - w) * D * D + w * phi * phi;
-    const double q_minus = mean_square - x_law;
-    // d w = other_weights smoothstep'(u) du, u affine in n = M1 / (D f) (f held fixed).
-    double blend_area = 0.0, blend_deep = 0.0;
-    if (w > 0.0 && facets_u < 1.0) {
-      const double dw_dn = other_weights * 6.0 * facets_u * (1.0 - facets_u) /
-                           (kCurvedFacetsFull - kCurvedFacetsFrom);
-      const double jump = (1.0 - b) * (phi * phi - D * D) * dw_dn;
-      blend_area = jump * area / (D * facet_scale);
-      blend_deep = -jump * weight / (D * D * facet_scale);
-    }
-    const double a_deep =
-        2.0 * (1.0 - b) * (1.0 - w) * D +
-        q_minus * slope * (uneven_share - kFlatPatchBand * r) / (kFlatPatchBand * D) + blend_deep;
-    const double curved_scale = 2.0 * (1.0 - b) * w * phi;
-    const double a_area = -q_minus * slope * uneven_share / (kFlatPatchBand * D) + blend_area;
-    const double a_pressure = 2.0 * b * mean;
-    const Vector3d area_centre = s.point + area1 / area;
-    const Vector3d pressure_centre =
-        weight > 0.0 ? Vector3d(s.point + pressure1 / weight) : area_centre;
-    Vector3d moment = a_deep * deepest + a_area * area_centre + a_pressure * pressure_centre;
-    double sum = a_deep + a_area + a_pressure;
-    if (w > 0.0) {
-      moment += curved_scale *
-                (curved.a_area * curved_area_centre + curved.a_pressure * curved_pressure_centre +
-                 curved.a_second * curved_second_centre);
-      sum += curved_scale * (curved.a_area + curved.a_pressure + curved.a_second);
-    }
-    if (sum > 0.0) {
-      p.point = moment / sum;
-      // The slant's share of r changes with the faces' relative tilt, not with the overlap at
-      // any point: its part of Omega's gradient is a couple about n x g (g the mean overlap
-      // slope; a turn d(theta) of a against b changes |g| by -d(theta) . (m x g^)), carried by
-      // moving the force's point along g by (dOmega/d|g|) / sum (energy kn Omega / 2, force
-      // kn sum / 2).
-      const double slope_norm = (gradient1 / area).norm();
-      if (slant > 0.0 && slope_norm > 0.0) {
-        const double d_omega_d_slope =
-            q_minus * slope * (slant / uneven_total) / (kFlatPatchBand * D) * 0.5 * layer;
-        p.point += d_omega_d_slope / sum * (gradient1 / area) / slope_norm;
-      }
-      p.overlap = 0.5 * sum;
-      p.energy_overlap = std::sqrt(std::max(0.0, (1.0 - b) * x_law + b * mean_square));
-      const Vector3d point_normal =
-          w > 0.0 ? Vector3d((1.0 - w) * deepest_normal + w * curved_normal) : deepest_normal;
-      const Vector3d blended = (1.0 - b) * point_normal + b * poly_normal;
-      p.normal = blended.normalized();
-    }
-  }
+  if ((beta > 0.0 || w > 0.0) && plain_share < 1.0)
+    energy_point(cc, sums, flat, {D, deepest, deepest_normal, poly_normal, plain_share},
+                 {w, other_weights, facets_u, facet_scale, curved, curved_area_centre,
+                  curved_pressure_centre, curved_second_centre, curved_normal},
+                 p);
   p.face_weight = face_weight_of(spread, mean_gradient.norm()) * (1.0 - plain_share);
   // Step 6: the patch's extent about the point. Parallel-axis theorem from s.point to p.point
   // (q = p.point - s.point), then onto the contact plane.
