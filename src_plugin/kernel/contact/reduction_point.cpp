@@ -368,6 +368,157 @@ void energy_point(const ContactClass &cc, const PolygonSums &sums, const FlatMea
   }
 }
 
+// Step 6: the patch's extent about p.point, in the plane normal to p.normal (p.face_weight
+// set), from the polygons' sums about `origin` (the seed's midpoint).
+void patch_extent(const Vector3d &origin, const PolygonSums &sums,
+                  const std::vector<ContactPolygon> &polygons, std::size_t num_polygons,
+                  ContactPoint &p) {
+  const double area = sums.area;
+  const Vector3d &area1 = sums.area1;
+  const Eigen::Matrix3d &area2 = sums.area2;
+  // Step 6: the patch's extent about the point. Parallel-axis theorem from the origin to p.point
+  // (q = p.point - origin), then onto the contact plane.
+  const Vector3d q = p.point - origin;
+  const Eigen::Matrix3d about_point =
+      area2 - area1 * q.transpose() - q * area1.transpose() + area * q * q.transpose();
+  const Eigen::Matrix3d plane = Eigen::Matrix3d::Identity() - p.normal * p.normal.transpose();
+  const Eigen::Matrix3d j = plane * about_point * plane;
+  p.patch_second_moment = 0.5 * (j + j.transpose());
+  p.patch_area = area;
+  p.damping_point = origin + area1 / area;
+  // The mean distance of the patch from the point, over the same polygons, projected onto the
+  // contact plane (numerator and denominator alike). Only a face-like contact twists against
+  // its patch (contact_force.h), so a point-like one skips the integral (its asinh per edge).
+  DistanceIntegral dist;
+  for (std::size_t k = 0; p.face_weight > 0.0 && k < num_polygons; ++k) {
+    const ContactPolygon &poly = polygons[k];
+    const DistanceIntegral one =
+        polygon_distance_integral(poly.vertices, poly.num_vertices, p.point, p.normal);
+    dist.area += one.area;
+    dist.distance += one.distance;
+  }
+  p.patch_mean_radius = dist.area > 0.0 ? dist.distance / dist.area : 0.0;
+}
+
+// Step 5c: what a curved patch contributes -- the peak of its overlap moments, the centres
+// where that peak's gradient acts and its direction -- and w, how much it counts (0: the
+// deepest corner alone). facet_scale: the polygons' overlap-weighted smaller triangle area;
+// facets_u: how many facets the patch spans, 0 at kCurvedFacetsFrom, 1 at kCurvedFacetsFull.
+struct CurvedPatch {
+  double facet_scale, facets_u;
+  double w, other_weights; // w = other_weights smoothstep(facets_u)
+  CurvedPeak curved;
+  Vector3d area_centre, pressure_centre, second_centre, normal;
+};
+
+CurvedPatch curved_patch(const ContactClass &cc, double weight, double facet_area, double D,
+                         double curved_base, const Vector3d &deepest_normal,
+                         std::size_t num_polygons, double plain_overlap, double member_overlap,
+                         const Faces &faces, const ReductionWorkspace &work) {
+  const std::vector<Raw> &raw = cc.raw;
+  const std::vector<ContactPolygon> &polygons = work.polygons;
+  const std::vector<int> &plain = work.plain;
+  const double layer = cc.layer;
+  const Raw &s = raw[cc.seed];
+  const double facet_scale = weight > 0.0 ? facet_area / weight : 0.0;
+  const double facets = facet_scale > 0.0 && D > 0.0 ? weight / (D * facet_scale) : 0.0;
+  const double facets_u = (facets - kCurvedFacetsFrom) / (kCurvedFacetsFull - kCurvedFacetsFrom);
+  double w = 0.0, other_weights = 0.0;
+  CurvedPeak curved;
+  OverlapMoments mo;
+  Vector3d curved_area_centre = Vector3d::Zero(), curved_pressure_centre = Vector3d::Zero(),
+           curved_second_centre = Vector3d::Zero(), curved_normal = Vector3d::Zero();
+  if (curved_base > 0.0 && facets_u > 0.0) {
+    for (std::size_t k = 0; k < num_polygons; ++k)
+      add_overlap_moments(polygons[k], layer, deepest_normal, s.point, mo);
+    // A ball's cap reaches facets tilted past the 10 degrees of step 5b (at an overlap of
+    // 1.5 % of its radius): their polygons up to kCurvedFacetAngle enter the moments only.
+    // What is left without a polygon (a steep side, an edge's other face) cuts the patch off,
+    // and its moments' peak is not its own: it keeps the deepest corner.
+    add_wide_polygons(cc, faces, deepest_normal, plain, mo, plain_overlap);
+    const double outside =
+        member_overlap > 0.0 ? std::max(0.0, plain_overlap) / member_overlap : 0.0;
+    const double facet_angle = facet_angle_of(mo, facet_scale);
+    const double fine = 1.0 - smoothstep((facet_angle - kCurvedFineAngle) / kCurvedFineAngle);
+    curved = curved_peak(mo.area, mo.m1, mo.m2, mo.m3);
+    other_weights =
+        curved_base * (1.0 - smoothstep(outside / kCurvedOutsideShare)) * curved.validity * fine;
+    w = other_weights * smoothstep(facets_u);
+    if (w > 0.0) {
+      curved_area_centre = s.point + mo.area1 / mo.area;
+      curved_pressure_centre = s.point + mo.first1 / mo.m1;
+      curved_second_centre = s.point + mo.second1 / mo.m2;
+      // The direction of the peak's gradient under translation (OverlapMoments).
+      const Vector3d n = curved.a_area * mo.area_normal / mo.area +
+                         curved.a_pressure * mo.m1_normal / mo.m1 +
+                         curved.a_second * mo.m2_normal / mo.m2;
+      const double len = n.norm();
+      curved_normal = std::isfinite(len) && len > 0.5 ? Vector3d(n / len) : deepest_normal;
+    }
+  }
+  return {facet_scale,
+          facets_u,
+          w,
+          other_weights,
+          curved,
+          curved_area_centre,
+          curved_pressure_centre,
+          curved_second_centre,
+          curved_normal};
+}
+
+// Step 5b's deepest overlap D, its point and normal: the polygons' (oriented near flat by the
+// polygons, from the band's end on by the kernel's closest points), moved to the smooth
+// surfaces' and to the members without a polygon's where those reach deeper, with those
+// shares.
+struct DeepestBlend {
+  double D;
+  Vector3d point, normal;
+  double smooth_blend, plain_share;
+};
+
+DeepestBlend deepest_blend(const ContactClass &cc, double D_poly, double deepest_plain,
+                           const SmoothFound &smooth, const Vector3d &poly_deepest,
+                           const Vector3d &poly_deepest_normal, double beta, const Vector3d &ref) {
+  const Raw &s = cc.raw[cc.seed];
+  const double taper = kDeepestTaper * cc.layer;
+  // A body that samples a smooth surface (smooth_surface.h) is measured on it: the polygons'
+  // deepest point with the facets' lifts, which is D_poly where no lift reaches (flat facets,
+  // no smooth edge: nothing changes), and takes over the point and normal once it lies a taper
+  // above the facets' deepest corner.
+  const double smooth_gain = smooth.found ? std::max(0.0, smooth.overlap - D_poly) : 0.0;
+  const Vector3d smooth_point = smooth.found ? smooth.point : poly_deepest;
+  const Vector3d smooth_normal = smooth.found ? smooth.normal : poly_deepest_normal;
+  const double smooth_blend = smoothstep(smooth_gain / taper);
+  // Members without a polygon (a face's own rim seen edge-on, an edge at a clear angle) take
+  // over only where they are deeper than the polygons by more than the taper: within it they
+  // are the same closest points seen through the kernel's tolerance (step 5b).
+  const double D_surface = D_poly + smooth_gain;
+  const double plain_share = smoothstep((deepest_plain - D_surface - taper) / taper);
+  double D = D_surface;
+  Vector3d deepest = poly_deepest, deepest_normal;
+  if (smooth_blend > 0.0)
+    deepest += smooth_blend * (smooth_point - poly_deepest);
+  {
+    Vector3d kernel_point, kernel_normal;
+    kernel_deepest(cc, s.overlap, false, taper, ref, kernel_point, kernel_normal);
+    // Near flat the polygons orient the deepest point; from the band's end on, the kernel's
+    // closest points (the direction of the gradient of a tilted face's overlap).
+    deepest_normal = beta * poly_deepest_normal + (1.0 - beta) * kernel_normal;
+    if (smooth_blend > 0.0)
+      deepest_normal += smooth_blend * (smooth_normal - deepest_normal);
+    if (plain_share > 0.0) {
+      Vector3d plain_point, plain_normal;
+      kernel_deepest(cc, deepest_plain, true, taper, ref, plain_point, plain_normal);
+      D += plain_share * (deepest_plain - D_surface);
+      deepest += plain_share * (plain_point - deepest);
+      deepest_normal += plain_share * (plain_normal - deepest_normal);
+    }
+    deepest_normal.normalize();
+  }
+  return {D, deepest, deepest_normal, smooth_blend, plain_share};
+}
+
 } // namespace
 
 ContactPoint make_point(const ContactClass &cc, const Vector3d &ref, const Faces &faces,
@@ -448,8 +599,7 @@ ContactPoint make_point(const ContactClass &cc, const Vector3d &ref, const Faces
   const double excess = sums.excess;
   const Vector3d &excess1 = sums.excess1, &excess_normal = sums.excess_normal;
   const double area = sums.area, weight = sums.weight, facet_area = sums.facet_area;
-  const Vector3d &area1 = sums.area1, &area_normal = sums.area_normal;
-  const Eigen::Matrix3d &area2 = sums.area2;
+  const Vector3d &area_normal = sums.area_normal;
   const Vector3d &gradient1 = sums.gradient1;
   const double gradient2 = sums.gradient2;
   // excess > 0: the deepest corner exceeds the level (its polygon has a region above it).
@@ -461,40 +611,10 @@ ContactPoint make_point(const ContactClass &cc, const Vector3d &ref, const Faces
   const FlatMeasure flat = flat_measure(sums, D_poly, layer);
   const double beta = flat.beta;
 
-  // A body that samples a smooth surface (smooth_surface.h) is measured on it: the polygons'
-  // deepest point with the facets' lifts, which is D_poly where no lift reaches (flat facets,
-  // no smooth edge: nothing changes), and takes over the point and normal once it lies a taper
-  // above the facets' deepest corner.
-  const double smooth_gain = smooth.found ? std::max(0.0, smooth.overlap - D_poly) : 0.0;
-  const Vector3d smooth_point = smooth.found ? smooth.point : poly_deepest;
-  const Vector3d smooth_normal = smooth.found ? smooth.normal : poly_deepest_normal;
-  const double smooth_blend = smoothstep(smooth_gain / taper);
-  // Members without a polygon (a face's own rim seen edge-on, an edge at a clear angle) take
-  // over only where they are deeper than the polygons by more than the taper: within it they
-  // are the same closest points seen through the kernel's tolerance (step 5b).
-  const double D_surface = D_poly + smooth_gain;
-  const double plain_share = smoothstep((deepest_plain - D_surface - taper) / taper);
-  double D = D_surface;
-  Vector3d deepest = poly_deepest, deepest_normal;
-  if (smooth_blend > 0.0)
-    deepest += smooth_blend * (smooth_point - poly_deepest);
-  {
-    Vector3d kernel_point, kernel_normal;
-    kernel_deepest(cc, s.overlap, false, taper, ref, kernel_point, kernel_normal);
-    // Near flat the polygons orient the deepest point; from the band's end on, the kernel's
-    // closest points (the direction of the gradient of a tilted face's overlap).
-    deepest_normal = beta * poly_deepest_normal + (1.0 - beta) * kernel_normal;
-    if (smooth_blend > 0.0)
-      deepest_normal += smooth_blend * (smooth_normal - deepest_normal);
-    if (plain_share > 0.0) {
-      Vector3d plain_point, plain_normal;
-      kernel_deepest(cc, deepest_plain, true, taper, ref, plain_point, plain_normal);
-      D += plain_share * (deepest_plain - D_surface);
-      deepest += plain_share * (plain_point - deepest);
-      deepest_normal += plain_share * (plain_normal - deepest_normal);
-    }
-    deepest_normal.normalize();
-  }
+  const DeepestBlend blend = deepest_blend(cc, D_poly, deepest_plain, smooth, poly_deepest,
+                                           poly_deepest_normal, beta, ref);
+  const double smooth_blend = blend.smooth_blend, plain_share = blend.plain_share, D = blend.D;
+  const Vector3d &deepest = blend.point, &deepest_normal = blend.normal;
   p.point = deepest;
   p.overlap = p.energy_overlap = D;
   p.normal = deepest_normal;
@@ -511,70 +631,20 @@ ContactPoint make_point(const ContactClass &cc, const Vector3d &ref, const Faces
   // A do(c_A), dD = do(p_D), exact while the patch lies within the polygons' 10 degrees, as it
   // does while n is small), so the blend's own gradient enters the force (below) and a ball
   // passing through it keeps its energy.
-  const double facet_scale = weight > 0.0 ? facet_area / weight : 0.0;
-  const double facets = facet_scale > 0.0 && D > 0.0 ? weight / (D * facet_scale) : 0.0;
-  const double facets_u = (facets - kCurvedFacetsFrom) / (kCurvedFacetsFull - kCurvedFacetsFrom);
-  double w = 0.0, other_weights = 0.0;
-  CurvedPeak curved;
-  OverlapMoments mo;
-  Vector3d curved_area_centre = Vector3d::Zero(), curved_pressure_centre = Vector3d::Zero(),
-           curved_second_centre = Vector3d::Zero(), curved_normal = Vector3d::Zero();
-  if (curved_base > 0.0 && facets_u > 0.0) {
-    for (std::size_t k = 0; k < num_polygons; ++k)
-      add_overlap_moments(polygons[k], layer, deepest_normal, s.point, mo);
-    // A ball's cap reaches facets tilted past the 10 degrees of step 5b (at an overlap of
-    // 1.5 % of its radius): their polygons up to kCurvedFacetAngle enter the moments only.
-    // What is left without a polygon (a steep side, an edge's other face) cuts the patch off,
-    // and its moments' peak is not its own: it keeps the deepest corner.
-    add_wide_polygons(cc, faces, deepest_normal, plain, mo, plain_overlap);
-    const double outside =
-        member_overlap > 0.0 ? std::max(0.0, plain_overlap) / member_overlap : 0.0;
-    const double facet_angle = facet_angle_of(mo, facet_scale);
-    const double fine = 1.0 - smoothstep((facet_angle - kCurvedFineAngle) / kCurvedFineAngle);
-    curved = curved_peak(mo.area, mo.m1, mo.m2, mo.m3);
-    other_weights =
-        curved_base * (1.0 - smoothstep(outside / kCurvedOutsideShare)) * curved.validity * fine;
-    w = other_weights * smoothstep(facets_u);
-    if (w > 0.0) {
-      curved_area_centre = s.point + mo.area1 / mo.area;
-      curved_pressure_centre = s.point + mo.first1 / mo.m1;
-      curved_second_centre = s.point + mo.second1 / mo.m2;
-      // The direction of the peak's gradient under translation (OverlapMoments).
-      const Vector3d n = curved.a_area * mo.area_normal / mo.area +
-                         curved.a_pressure * mo.m1_normal / mo.m1 +
-                         curved.a_second * mo.m2_normal / mo.m2;
-      const double len = n.norm();
-      curved_normal = std::isfinite(len) && len > 0.5 ? Vector3d(n / len) : deepest_normal;
-    }
-  }
+  const CurvedPatch cp = curved_patch(cc, weight, facet_area, D, curved_base, deepest_normal,
+                                      num_polygons, plain_overlap, member_overlap, faces, work);
+  const double facet_scale = cp.facet_scale, facets_u = cp.facets_u;
+  const double w = cp.w, other_weights = cp.other_weights;
+  const CurvedPeak &curved = cp.curved;
+  const Vector3d &curved_area_centre = cp.area_centre, &curved_pressure_centre = cp.pressure_centre,
+                 &curved_second_centre = cp.second_centre, &curved_normal = cp.normal;
   if ((beta > 0.0 || w > 0.0) && plain_share < 1.0)
     energy_point(cc, sums, flat, {D, deepest, deepest_normal, poly_normal, plain_share},
                  {w, other_weights, facets_u, facet_scale, curved, curved_area_centre,
                   curved_pressure_centre, curved_second_centre, curved_normal},
                  p);
   p.face_weight = face_weight_of(spread, mean_gradient.norm()) * (1.0 - plain_share);
-  // Step 6: the patch's extent about the point. Parallel-axis theorem from s.point to p.point
-  // (q = p.point - s.point), then onto the contact plane.
-  const Vector3d q = p.point - s.point;
-  const Eigen::Matrix3d about_point =
-      area2 - area1 * q.transpose() - q * area1.transpose() + area * q * q.transpose();
-  const Eigen::Matrix3d plane = Eigen::Matrix3d::Identity() - p.normal * p.normal.transpose();
-  const Eigen::Matrix3d j = plane * about_point * plane;
-  p.patch_second_moment = 0.5 * (j + j.transpose());
-  p.patch_area = area;
-  p.damping_point = s.point + area1 / area;
-  // The mean distance of the patch from the point, over the same polygons, projected onto the
-  // contact plane (numerator and denominator alike). Only a face-like contact twists against
-  // its patch (contact_force.h), so a point-like one skips the integral (its asinh per edge).
-  DistanceIntegral dist;
-  for (std::size_t k = 0; p.face_weight > 0.0 && k < num_polygons; ++k) {
-    const ContactPolygon &poly = polygons[k];
-    const DistanceIntegral one =
-        polygon_distance_integral(poly.vertices, poly.num_vertices, p.point, p.normal);
-    dist.area += one.area;
-    dist.distance += one.distance;
-  }
-  p.patch_mean_radius = dist.area > 0.0 ? dist.distance / dist.area : 0.0;
+  patch_extent(s.point, sums, polygons, num_polygons, p);
   return p;
 }
 
