@@ -519,58 +519,78 @@ DeepestBlend deepest_blend(const ContactClass &cc, double D_poly, double deepest
   return {D, deepest, deepest_normal, smooth_blend, plain_share};
 }
 
-} // namespace
+// What a class's members give before a point is chosen: their contact polygons are
+// work.polygons[0, num_polygons), each with its layer in work.polygon_layers (-1: intersecting
+// or sunk); the members without one are work.plain.
+struct ClassMembers {
+  std::size_t num_polygons = 0;
+  double deepest_polygon = 0.0; // m, the polygon members' deepest overlap, exact (step 5b)
+  double deepest_plain = -std::numeric_limits<double>::infinity(); // m, the others' deepest
+  double plain_overlap = 0.0;  // m, the summed overlap of the members without a polygon,
+  double member_overlap = 0.0; // and of all (step 5c: how much lies outside the polygons)
+};
 
-ContactPoint make_point(const ContactClass &cc, const Vector3d &ref, const Faces &faces,
-                        double tolerance, ReductionWorkspace &work) {
+// Walks the class's members: min_distance, intersecting and num_merged into `p`; their
+// polygons and the members without one into `work`.
+ClassMembers gather_members(const ContactClass &cc, const Faces &faces, double tolerance,
+                            ReductionWorkspace &work, ContactPoint &p) {
   const std::vector<Raw> &raw = cc.raw;
-  const std::vector<int> &members = cc.members, &cls = cc.cls, &absorbed = cc.absorbed;
-  const int c = cc.id, seed = cc.seed;
   const double layer = cc.layer;
-  ContactPoint p;
   std::vector<ContactPolygon> &polygons = work.polygons;
-  std::vector<double> &polygon_exact = work.polygon_layers;
-  std::vector<int> &plain = work.plain;
   // `polygons` only grows: entries [0, num_polygons) are this class's. Reusing the slots keeps
   // emplace_back from zeroing a 3 KB ContactPolygon per member (value-initialisation).
-  std::size_t num_polygons = 0;
-  polygon_exact.clear();
-  plain.clear();
-  const Raw &s = raw[seed];
-  double deepest_plain = -std::numeric_limits<double>::infinity(); // members without a polygon
-  double D_poly = 0.0; // the polygon members' deepest overlap, exact (step 5b)
-  double plain_overlap = 0.0, member_overlap = 0.0; // step 5c: how much lies outside polygons
+  ClassMembers m;
+  work.polygon_layers.clear();
+  work.plain.clear();
   // A member's exact overlap lies at most `tolerance` above its kernel overlap (and never below
   // it beyond rounding), so one that stays below the deepest exact one found so far by more
   // than that cannot be the deepest: its triangle distance is not recomputed. The members come
   // deepest first, so mostly only the first is.
   const double exact_slack =
-      tolerance + 1e-9 * layer + 1e-13 * raw[seed].point.cwiseAbs().maxCoeff();
-  const double taper = kDeepestTaper * layer;
+      tolerance + 1e-9 * layer + 1e-13 * raw[cc.seed].point.cwiseAbs().maxCoeff();
   p.min_distance = std::numeric_limits<double>::infinity();
-  for (int i : members) {
-    if (cls[i] != c)
+  for (int i : cc.members) {
+    if (cc.cls[i] != cc.id)
       continue;
     const Raw &r = raw[i];
     p.min_distance = std::min(p.min_distance, r.distance);
     p.intersecting = p.intersecting || r.intersecting;
     ++p.num_merged;
-    if (absorbed[i])
+    if (cc.absorbed[i])
       continue; // rim contacts count, but neither place nor orient the contact
-    if (num_polygons == polygons.size())
+    if (m.num_polygons == polygons.size())
       polygons.emplace_back();
-    if (member_polygon(r, faces, layer, polygons[num_polygons])) { // filled in place
-      ++num_polygons;
-      polygon_exact.push_back(!(r.intersecting || r.overlap > layer) ? layer : -1.0);
-      if (!(r.overlap + exact_slack < D_poly))
-        D_poly = std::max(D_poly, exact_overlap(r, faces, layer));
+    if (member_polygon(r, faces, layer, polygons[m.num_polygons])) { // filled in place
+      ++m.num_polygons;
+      work.polygon_layers.push_back(!(r.intersecting || r.overlap > layer) ? layer : -1.0);
+      if (!(r.overlap + exact_slack < m.deepest_polygon))
+        m.deepest_polygon = std::max(m.deepest_polygon, exact_overlap(r, faces, layer));
     } else {
-      deepest_plain = std::max(deepest_plain, r.overlap);
-      plain_overlap += std::max(0.0, r.overlap); // (< 0: facets only within the lifts' reach)
-      plain.push_back(i);
+      m.deepest_plain = std::max(m.deepest_plain, r.overlap);
+      m.plain_overlap += std::max(0.0, r.overlap); // (< 0: facets only within the lifts' reach)
+      work.plain.push_back(i);
     }
-    member_overlap += std::max(0.0, r.overlap);
+    m.member_overlap += std::max(0.0, r.overlap);
   }
+  return m;
+}
+
+} // namespace
+
+ContactPoint make_point(const ContactClass &cc, const Vector3d &ref, const Faces &faces,
+                        double tolerance, ReductionWorkspace &work) {
+  const std::vector<Raw> &raw = cc.raw;
+  const int seed = cc.seed;
+  const double layer = cc.layer;
+  ContactPoint p;
+  std::vector<ContactPolygon> &polygons = work.polygons;
+  std::vector<double> &polygon_exact = work.polygon_layers;
+  const Raw &s = raw[seed];
+  const double taper = kDeepestTaper * layer;
+  const ClassMembers cm = gather_members(cc, faces, tolerance, work, p);
+  const std::size_t num_polygons = cm.num_polygons;
+  const double deepest_plain = cm.deepest_plain, D_poly = cm.deepest_polygon;
+  const double plain_overlap = cm.plain_overlap, member_overlap = cm.member_overlap;
   p.tri_a = s.tri_a;
   p.tri_b = s.tri_b;
 
