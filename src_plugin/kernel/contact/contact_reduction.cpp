@@ -1,6 +1,6 @@
 // The reduction's entry points (contact_reduction.h): the raw contacts that count, in their
-// deterministic order, then the chosen method: the clusters (reduction_clusters.cpp and the
-// other reduction_*.cpp, one per step of README.md) or a baseline.
+// deterministic order, then the chosen method: the clusters (the reduction_*.cpp files; which
+// step is where: README.md) or a baseline.
 #include "contact/contact_reduction.h"
 
 #include "contact/reduction_steps.h"

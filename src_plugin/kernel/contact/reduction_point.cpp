@@ -1,4 +1,12 @@
-// Steps 4 to 6 of the reduction (README.md): one contact point per class.
+// Steps 4 to 6 of the reduction (README.md): one contact point per class. make_point gathers
+// the class's members (step 4) and takes step 5 (no contact polygons: point_without_polygons,
+// with reduction_smooth_deepest.cpp) or step 5b (deepest_blend, flat_measure, energy_point),
+// with step 5c (curved_patch) and step 6 (patch_extent).
+//
+// Steps 5b, 5c and 6 share this translation unit on purpose: the compiler fuses a product into
+// a sum (floating-point contraction, the default for C++ with FMA) depending on what it
+// inlines, and these steps' results are bitwise those of the same functions compiled here;
+// moved to another file, step 5c's normal changed in its last bits.
 #include "contact/reduction_steps.h"
 #include "contact/smooth_peak.h"
 #include "distance/triangle_distance.h"
