@@ -98,13 +98,167 @@ Affine plane_height(const Vector3d &nt, const Vector3d &t0, const Vector3d &o, c
   return {nt.dot(t0 - o) / nm, Vector2d(-nt.dot(u) / nm, -nt.dot(v) / nm)};
 }
 
+// The two triangles' unit normals (nb turned to na's side), their bisector m and a basis
+// (u, v) of the plane orthogonal to it.
+struct PolygonFrame {
+  const Vector3d &na, &nb, &m, &u, &v;
+};
+
+// x in the frame's plane coordinates relative to o.
+Vector2d project(const Vector3d &x, const Vector3d &o, const PolygonFrame &f) {
+  return Vector2d((x - o).dot(f.u), (x - o).dot(f.v));
+}
+
+// b's projection (counter-clockwise) clipped by the three edges of a's (counter-clockwise),
+// keeping track of the line each polygon edge lies on.
+struct TriangleOverlap {
+  Polygon poly[2];
+  int cur = 0;         // poly[cur]: the result so far
+  Vector3d a[3], b[3]; // the triangles as given
+  Vector3d A[3], B[3]; // their corners counter-clockwise: B[k] to B[k + 1] is b's edge k,
+                       // A[e] to A[e + 1] a's edge kEdgeOfA + e
+};
+
+void clip_triangles(const Vector3d (&a)[3], const Vector3d (&b)[3], const Vector3d &o,
+                    const PolygonFrame &f, TriangleOverlap &t) {
+  Vector2d pa[3] = {project(a[0], o, f), project(a[1], o, f), project(a[2], o, f)};
+  for (int k = 0; k < 3; ++k) {
+    t.a[k] = t.A[k] = a[k];
+    t.b[k] = t.B[k] = b[k];
+  }
+  if (cross2(pa[1] - pa[0], pa[2] - pa[0]) < 0.0) {
+    std::swap(pa[1], pa[2]);
+    std::swap(t.A[1], t.A[2]);
+  }
+  Polygon &first = t.poly[0];
+  first.n = 3;
+  for (int k = 0; k < 3; ++k)
+    first.p[k] = project(b[k], o, f);
+  if (cross2(first.p[1] - first.p[0], first.p[2] - first.p[0]) < 0.0) {
+    std::swap(first.p[1], first.p[2]);
+    std::swap(t.B[1], t.B[2]);
+  }
+  for (int k = 0; k < 3; ++k)
+    first.line[k] = k;
+  double s[kMaxVertices];
+  t.cur = 0;
+  for (int e = 0; e < 3 && t.poly[t.cur].n > 0; ++e) {
+    const Vector2d &p = pa[e], edge = pa[e == 2 ? 0 : e + 1] - p;
+    for (int i = 0; i < t.poly[t.cur].n; ++i)
+      s[i] = cross2(edge, t.poly[t.cur].p[i] - p);
+    clip(t.poly[t.cur], s, kEdgeOfA + e, t.poly[1 - t.cur]);
+    t.cur = 1 - t.cur;
+  }
+}
+
+// Integrals over the polygon q, by a fan from q.p[0], of the overlap o (clamped at 0 per
+// corner); positions relative to q.p[0].
+struct FanIntegrals {
+  double area = 0.0, weight = 0.0, weight2 = 0.0; // of 1, o, o^2
+  Vector2d moment = Vector2d::Zero(), area_moment = Vector2d::Zero(); // of o x, of x
+  Eigen::Matrix2d second = Eigen::Matrix2d::Zero();                  // of x x^T
+};
+
+// For a linear f on a triangle of area A with vertex values f_i at d_i: integral f dA =
+// A (f_0 + f_1 + f_2) / 3 and integral f d dA = A / 12 (sum_i f_i * sum_i d_i + sum_i f_i d_i);
+// integral of x x^T dA over the triangle (0, d1, d2) is A/12 (d1 d1^T + d2 d2^T + (d1 + d2)
+// (d1 + d2)^T).
+FanIntegrals integrate_fan(const Polygon &q, const Affine &overlap) {
+  FanIntegrals r;
+  const Vector2d &p0 = q.p[0];
+  const double o0 = std::max(0.0, overlap(p0));
+  for (int i = 1; i + 1 < q.n; ++i) {
+    const Vector2d d1 = q.p[i] - p0, d2 = q.p[i + 1] - p0;
+    const double o1 = std::max(0.0, overlap(q.p[i])), o2 = std::max(0.0, overlap(q.p[i + 1]));
+    const double at = 0.5 * cross2(d1, d2);
+    r.area += at;
+    r.area_moment += at / 3.0 * (d1 + d2);
+    r.weight += at * (o0 + o1 + o2) / 3.0;
+    r.weight2 += at / 6.0 * (o0 * o0 + o1 * o1 + o2 * o2 + o0 * o1 + o1 * o2 + o2 * o0);
+    r.moment += at / 12.0 * ((o0 + o1 + o2) * (d1 + d2) + o1 * d1 + o2 * d2);
+    const Vector2d d12 = d1 + d2;
+    r.second += at / 12.0 * (d1 * d1.transpose() + d2 * d2.transpose() + d12 * d12.transpose());
+  }
+  return r;
+}
+
+// The planes of the two triangles as heights along m over the frame's plane, and the local
+// overlap o = layer - (h_b - h_a) cos(phi / 2) between them (affine).
+struct OverlapField {
+  Affine ha, hb, overlap;
+  double c_half; // cos(phi / 2), phi the angle between the triangles
+};
+
+// The patch's area, integrals, directions and centroids from the fan integrals of q.
+void set_integrals(const Polygon &q, const FanIntegrals &in, const OverlapField &field,
+                   const Vector3d &o, const PolygonFrame &f, ContactPolygon &patch) {
+  const Vector2d &p0 = q.p[0];
+  patch.area = in.area;
+  patch.weight = std::max(0.0, in.weight);
+  patch.weight2 = std::max(0.0, in.weight2);
+  patch.direction = f.m;
+  patch.cos_half_angle = field.c_half;
+  patch.normal_b = f.nb.dot(f.m) < 0.0 ? Vector3d(-f.nb) : f.nb;
+  patch.normal_a = f.na.dot(f.m) < 0.0 ? Vector3d(-f.na) : f.na;
+  patch.overlap_gradient = field.overlap.gradient.x() * f.u + field.overlap.gradient.y() * f.v;
+  const Vector2d cen = in.area_moment / in.area; // area centroid relative to p0
+  const Vector2d c2 = p0 + (in.weight > 0.0 ? Vector2d(in.moment / in.weight) : cen);
+  patch.centroid = o + c2.x() * f.u + c2.y() * f.v + 0.5 * (field.ha(c2) + field.hb(c2)) * f.m;
+  const Vector2d ac2 = p0 + cen;
+  patch.area_centroid =
+      o + ac2.x() * f.u + ac2.y() * f.v + 0.5 * (field.ha(ac2) + field.hb(ac2)) * f.m;
+  // Parallel-axis theorem to the centroid, then into the world frame: J = B J2 B^T, B = [u v].
+  Eigen::Matrix2d j2 = in.second - in.area * cen * cen.transpose();
+  j2(0, 1) = j2(1, 0) = 0.5 * (j2(0, 1) + j2(1, 0));
+  Eigen::Matrix<double, 3, 2> basis;
+  basis.col(0) = f.u;
+  basis.col(1) = f.v;
+  patch.second_moment = basis * j2 * basis.transpose();
+}
+
+// Each corner lies on two lines (the edges before and after it): two of b's edges, a vertex of
+// b; two of a's, a vertex of a; one of each, an edge crossing. Its exact closest points on the
+// two triangles (vertex to triangle, or edge to edge) give its contact point and exact
+// overlap, as the distance kernel's closest points do (the midpoint along m lies beside that
+// pair's line by gap tan(phi / 2) / 2, and the affine o misses an edge pair's distance).
+void set_corners(const Polygon &q, const TriangleOverlap &t, const OverlapField &field,
+                 const Vector3d &o, const PolygonFrame &f, ContactPolygon &patch) {
+  const Vector3d(&A)[3] = t.A, (&B)[3] = t.B;
+  const Vector3d(&a)[3] = t.a, (&b)[3] = t.b;
+  for (int i = 0; i < q.n; ++i) {
+    const Vector2d &x = q.p[i];
+    const Vector3d base = o + x.x() * f.u + x.y() * f.v;
+    patch.vertices[i] = base + 0.5 * (field.ha(x) + field.hb(x)) * f.m;
+    patch.corner_overlaps[i] = std::max(0.0, field.overlap(x));
+    patch.max_overlap = std::max(patch.max_overlap, patch.corner_overlaps[i]);
+    const int in = q.line[i == 0 ? q.n - 1 : i - 1], out = q.line[i];
+    Vector3d pa_c = patch.vertices[i], pb_c = patch.vertices[i];
+    bool exact = true;
+    if (in == kLayerCut || out == kLayerCut) {
+      exact = false; // on the layer's edge: o = 0, no weight anywhere it is used
+    } else if (in < kEdgeOfA && out < kEdgeOfA) { // b's vertex B[out] over a
+      pb_c = B[out];
+      pa_c = closest_point_on_triangle(pb_c, a[0], a[1], a[2]);
+    } else if (in >= kEdgeOfA && out >= kEdgeOfA) { // a's vertex A[out - 3] over b
+      pa_c = A[out - kEdgeOfA];
+      pb_c = closest_point_on_triangle(pa_c, b[0], b[1], b[2]);
+    } else {
+      const int eb = in < kEdgeOfA ? in : out, ea = (in < kEdgeOfA ? out : in) - kEdgeOfA;
+      segment_closest(A[ea], A[ea == 2 ? 0 : ea + 1], B[eb], B[eb == 2 ? 0 : eb + 1], pa_c,
+                      pb_c);
+    }
+    patch.corner_points[i] = 0.5 * (pa_c + pb_c);
+    patch.corner_distances[i] = exact ? (pb_c - pa_c).norm() : -1.0;
+  }
+}
+
 } // namespace
 
 bool contact_polygon(const Vector3d &a0, const Vector3d &a1, const Vector3d &a2, const Vector3d &b0,
                      const Vector3d &b1, const Vector3d &b2, const Vector3d &normal, double layer,
                      ContactPolygon &patch, double max_angle) {
   // The defaults of the fields, without copying the corner arrays (3 KB, meaningful only up to
-  // num_vertices): an assignment from ContactPolygon() copied them for every triangle pair.
+  // num_vertices): an assignment from ContactPolygon() would copy them for every triangle pair.
   patch.~ContactPolygon();
   new (&patch) ContactPolygon;
   const Vector3d ca = (a1 - a0).cross(a2 - a0), cb = (b1 - b0).cross(b2 - b0);
@@ -129,125 +283,31 @@ bool contact_polygon(const Vector3d &a0, const Vector3d &a1, const Vector3d &a2,
   const Vector3d u = m.cross(Vector3d::Unit(k)).normalized();
   const Vector3d v = m.cross(u);
   const Vector3d &o = a0;
-  auto project = [&](const Vector3d &x) { return Vector2d((x - o).dot(u), (x - o).dot(v)); };
-
-  // Clip b's projection (counter-clockwise) by the three edges of a's (counter-clockwise),
-  // keeping track of the line each polygon edge lies on (corner_points below).
-  Vector3d B[3] = {b0, b1, b2};
-  Vector3d Ao[3] = {a0, a1, a2};
-  Vector2d pa[3] = {project(a0), project(a1), project(a2)};
-  if (cross2(pa[1] - pa[0], pa[2] - pa[0]) < 0.0) {
-    std::swap(pa[1], pa[2]);
-    std::swap(Ao[1], Ao[2]);
-  }
-  Polygon poly[2];
-  poly[0].n = 3;
-  poly[0].p[0] = project(b0);
-  poly[0].p[1] = project(b1);
-  poly[0].p[2] = project(b2);
-  if (cross2(poly[0].p[1] - poly[0].p[0], poly[0].p[2] - poly[0].p[0]) < 0.0) {
-    std::swap(poly[0].p[1], poly[0].p[2]);
-    std::swap(B[1], B[2]);
-  }
-  for (int k = 0; k < 3; ++k)
-    poly[0].line[k] = k; // b's edge from B[k] to B[k + 1]
+  const PolygonFrame f{na, nb, m, u, v};
+  TriangleOverlap t;
+  clip_triangles({a0, a1, a2}, {b0, b1, b2}, o, f, t);
+  // Keep o >= 0.
+  OverlapField field;
+  field.ha = plane_height(f.na, a0, o, f.u, f.v, f.m);
+  field.hb = plane_height(f.nb, b0, o, f.u, f.v, f.m);
+  field.c_half = std::abs(f.m.dot(f.na));
+  field.overlap = {layer - field.c_half * (field.hb.value0 - field.ha.value0),
+                   -field.c_half * (field.hb.gradient - field.ha.gradient)};
   double s[kMaxVertices];
-  int cur = 0;
-  for (int e = 0; e < 3 && poly[cur].n > 0; ++e) {
-    const Vector2d &p = pa[e], edge = pa[e == 2 ? 0 : e + 1] - p;
-    for (int i = 0; i < poly[cur].n; ++i)
-      s[i] = cross2(edge, poly[cur].p[i] - p);
-    clip(poly[cur], s, kEdgeOfA + e, poly[1 - cur]); // a's edge from Ao[e] to Ao[e + 1]
-    cur = 1 - cur;
-  }
-  // Local overlap o = layer - (h_b - h_a) cos(phi / 2), affine; keep o >= 0.
-  const Affine ha = plane_height(na, a0, o, u, v, m), hb = plane_height(nb, b0, o, u, v, m);
-  const double c_half = std::abs(m.dot(na)); // cos(phi / 2), phi the angle between them
-  const Affine overlap{layer - c_half * (hb.value0 - ha.value0),
-                       -c_half * (hb.gradient - ha.gradient)};
-  for (int i = 0; i < poly[cur].n; ++i)
-    s[i] = overlap(poly[cur].p[i]);
-  clip(poly[cur], s, kLayerCut, poly[1 - cur]);
-  const Polygon &q = poly[1 - cur];
+  const Polygon &clipped = t.poly[t.cur];
+  for (int i = 0; i < clipped.n; ++i)
+    s[i] = field.overlap(clipped.p[i]);
+  clip(clipped, s, kLayerCut, t.poly[1 - t.cur]);
+  const Polygon &q = t.poly[1 - t.cur];
   patch.min_triangle_area = 0.5 * std::min(la, lb);
   if (q.n < 3)
     return true;
-
-  // Integrals over a fan from q.p[0]; for a linear f on a triangle of area A with vertex values
-  // f_i at d_i: integral f dA = A (f_0 + f_1 + f_2) / 3 and integral f d dA =
-  // A / 12 (sum_i f_i * sum_i d_i + sum_i f_i d_i). Coordinates relative to q.p[0].
-  const Vector2d &p0 = q.p[0];
-  const double o0 = std::max(0.0, overlap(p0));
-  // Second moment of area about q.p[0]: integral of x x^T dA over the triangle (0, d1, d2) is
-  // A/12 (d1 d1^T + d2 d2^T + (d1 + d2)(d1 + d2)^T).
-  double area = 0.0, weight = 0.0, weight2 = 0.0;
-  Vector2d moment = Vector2d::Zero(), area_moment = Vector2d::Zero();
-  Eigen::Matrix2d second = Eigen::Matrix2d::Zero();
-  for (int i = 1; i + 1 < q.n; ++i) {
-    const Vector2d d1 = q.p[i] - p0, d2 = q.p[i + 1] - p0;
-    const double o1 = std::max(0.0, overlap(q.p[i])), o2 = std::max(0.0, overlap(q.p[i + 1]));
-    const double at = 0.5 * cross2(d1, d2);
-    area += at;
-    area_moment += at / 3.0 * (d1 + d2);
-    weight += at * (o0 + o1 + o2) / 3.0;
-    weight2 += at / 6.0 * (o0 * o0 + o1 * o1 + o2 * o2 + o0 * o1 + o1 * o2 + o2 * o0);
-    moment += at / 12.0 * ((o0 + o1 + o2) * (d1 + d2) + o1 * d1 + o2 * d2);
-    const Vector2d d12 = d1 + d2;
-    second += at / 12.0 * (d1 * d1.transpose() + d2 * d2.transpose() + d12 * d12.transpose());
-  }
-  if (!(area > 0.0))
+  const FanIntegrals integrals = integrate_fan(q, field.overlap);
+  if (!(integrals.area > 0.0))
     return true;
-  patch.area = area;
-  patch.weight = std::max(0.0, weight);
-  patch.weight2 = std::max(0.0, weight2);
-  patch.direction = m;
-  patch.cos_half_angle = c_half;
-  patch.normal_b = nb.dot(m) < 0.0 ? Vector3d(-nb) : nb;
-  patch.normal_a = na.dot(m) < 0.0 ? Vector3d(-na) : na;
-  patch.overlap_gradient = overlap.gradient.x() * u + overlap.gradient.y() * v;
-  const Vector2d cen = area_moment / area; // area centroid relative to p0
-  const Vector2d c2 = p0 + (weight > 0.0 ? Vector2d(moment / weight) : cen);
-  patch.centroid = o + c2.x() * u + c2.y() * v + 0.5 * (ha(c2) + hb(c2)) * m;
-  const Vector2d ac2 = p0 + cen;
-  patch.area_centroid = o + ac2.x() * u + ac2.y() * v + 0.5 * (ha(ac2) + hb(ac2)) * m;
-  // Parallel-axis theorem to the centroid, then into the world frame: J = B J2 B^T, B = [u v].
-  Eigen::Matrix2d j2 = second - area * cen * cen.transpose();
-  j2(0, 1) = j2(1, 0) = 0.5 * (j2(0, 1) + j2(1, 0));
-  Eigen::Matrix<double, 3, 2> basis;
-  basis.col(0) = u;
-  basis.col(1) = v;
-  patch.second_moment = basis * j2 * basis.transpose();
+  set_integrals(q, integrals, field, o, f, patch);
   patch.num_vertices = q.n;
-  // Each corner lies on two lines (the edges before and after it): two of b's edges, a vertex
-  // of b; two of a's, a vertex of a; one of each, an edge crossing. Its exact closest points on
-  // the two triangles (vertex to triangle, or edge to edge) give its contact point and exact
-  // overlap, as the distance kernel's closest points do (the midpoint along m lies beside that
-  // pair's line by gap tan(phi / 2) / 2, and the affine o misses an edge pair's distance).
-  for (int i = 0; i < q.n; ++i) {
-    const Vector2d &x = q.p[i];
-    const Vector3d base = o + x.x() * u + x.y() * v;
-    patch.vertices[i] = base + 0.5 * (ha(x) + hb(x)) * m;
-    patch.corner_overlaps[i] = std::max(0.0, overlap(x));
-    patch.max_overlap = std::max(patch.max_overlap, patch.corner_overlaps[i]);
-    const int in = q.line[i == 0 ? q.n - 1 : i - 1], out = q.line[i];
-    Vector3d pa_c = patch.vertices[i], pb_c = patch.vertices[i];
-    bool exact = true;
-    if (in == kLayerCut || out == kLayerCut) {
-      exact = false; // on the layer's edge: o = 0, no weight anywhere it is used
-    } else if (in < kEdgeOfA && out < kEdgeOfA) { // b's vertex B[out] over a
-      pb_c = B[out];
-      pa_c = closest_point_on_triangle(pb_c, a0, a1, a2);
-    } else if (in >= kEdgeOfA && out >= kEdgeOfA) { // a's vertex Ao[out - 3] over b
-      pa_c = Ao[out - kEdgeOfA];
-      pb_c = closest_point_on_triangle(pa_c, b0, b1, b2);
-    } else {
-      const int eb = in < kEdgeOfA ? in : out, ea = (in < kEdgeOfA ? out : in) - kEdgeOfA;
-      segment_closest(Ao[ea], Ao[ea == 2 ? 0 : ea + 1], B[eb], B[eb == 2 ? 0 : eb + 1], pa_c,
-                      pb_c);
-    }
-    patch.corner_points[i] = 0.5 * (pa_c + pb_c);
-    patch.corner_distances[i] = exact ? (pb_c - pa_c).norm() : -1.0;
-  }
+  set_corners(q, t, field, o, f, patch);
   return true;
 }
 
