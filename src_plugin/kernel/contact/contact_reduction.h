@@ -142,7 +142,7 @@ struct ReductionWorkspace {
 
 // Reduces `n` triangle-pair contacts of one pair (entries with overlap <= 0 are ignored) and
 // writes the contact points into `out` (cleared first), deepest first. tris_a, tris_b: the
-// world-frame triangles that the contacts were found on (find_triangle_contacts' a and b);
+// world-frame triangles that the contacts were found on (the distance kernel's a and b);
 // contact k's tri_a indexes tris_a and tri_b indexes tris_b (std::out_of_range otherwise).
 // eps_a, eps_b >= 0 (m).
 void reduce_contacts(const TriangleContact *contacts, int n, const TriangleSoA &tris_a,

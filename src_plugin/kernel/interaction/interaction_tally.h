@@ -2,8 +2,8 @@
 // one table that names them. The table is the single place where a counter's name, unit,
 // meaning and cross-rank reduction are written: compute tri/stats takes its column order from
 // it, the MPI reduction of the host layer packs and unpacks through it, the tool
-// `tri-stats-columns` prints it (the README's table and the deck tests take names from there),
-// so reordering or adding a counter changes every reader at once.
+// `tri-stats-columns` prints it (compute tri/stats' manual page and the deck tests take names
+// from there), so reordering or adding a counter changes every reader at once.
 #pragma once
 
 #include "distance/particle_contacts.h"
@@ -51,7 +51,7 @@ enum class StatReduction { sum, max, min }; // how a column combines over thread
 struct StatColumn {
   std::string name;    // what decks and tests call it: c_ID[k] is stats_columns()[k - 1]
   std::string unit;    // "1" for counts
-  std::string meaning; // one line for the README and tri-stats-columns
+  std::string meaning; // one line for the manual page and tri-stats-columns
   StatReduction reduction;
   // The field: a count (bin: the Newton histogram's bin, else 0) or a length; one is set.
   long long *(*count)(InteractionTally &t, int bin) = nullptr;
