@@ -32,7 +32,7 @@ second, each at every skin and then at its best.
 
   /usr/bin/python3 validation/performance/column/run_column.py [--repeat 3] [--mat stiffness hooke]
       [--phases settled free gas] [--skins 0.2 0.4 0.7 1.0 1.5] [--steps 100] [--chunks 5]
-      [--tri /tmp/bench_bin/liggghts-tri] [--liggghts /usr/bin/liggghts] [--work /tmp/column_bench]
+      [--tri build/src_plugin/driver/liggghts-tri] [--liggghts /usr/bin/liggghts] [--work /tmp/column_bench]
       [--label NAME] [--prepare]
   /usr/bin/python3 validation/performance/column/run_column.py --cubes [--n-cubes 500] [--repeat 3]
   /usr/bin/python3 validation/performance/column/run_column.py --table RESULTS.json [...]
@@ -625,7 +625,7 @@ def plot(png, paths):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--tri", default="/tmp/bench_bin/liggghts-tri")
+    ap.add_argument("--tri", default=valtools.default_exe())
     ap.add_argument("--liggghts", default="/usr/bin/liggghts")
     ap.add_argument("--stats-tool", default=None, help="tri-stats-columns (default: beside --tri)")
     ap.add_argument("--work", default="/tmp/column_bench")
