@@ -72,19 +72,8 @@ CUBE_DT = {"mesh": 3e-5, "clump8": 1.1e-5, "clump27": 7.5e-6}   # validation/bul
 CUBE_SEED = 67867967                               # run_bulk.py's insertion seed 0
 
 
-def sh(cmd):
-    try:
-        return subprocess.run(cmd, shell=True, capture_output=True, text=True).stdout.strip()
-    except OSError:
-        return ""
-
-
 def machine():
-    model = "?"
-    for line in sh("lscpu").splitlines():
-        if line.startswith("Model name:"):
-            model = line.split(":", 1)[1].strip()
-    return {"host": platform.node(), "cpu": model, "cores": os.cpu_count(),
+    return {"host": platform.node(), "cpu": valtools.cpu_model(), "cores": os.cpu_count(),
             "threads": "OMP_NUM_THREADS=1, 1 MPI rank"}
 
 
