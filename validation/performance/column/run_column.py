@@ -238,13 +238,16 @@ class Column(Bench):
     def __init__(self, a):
         super().__init__(a, "column")
         self.cols = valtools.stats_columns(a.stats_tool, COUNTERS)
-        self.floor = os.path.join(a.work, "floor.stl")
-        write_floor(self.floor, LATTICE_N * LATTICE_S / 2)
+        # --n other than the lattice's 8: n^3 rocks in a column n x 4.5 mm wide, on its own floor
+        self.suffix = "" if a.n == LATTICE_N else f"_n{a.n}"
+        self.floor = os.path.join(a.work, f"floor{self.suffix}.stl")
+        write_floor(self.floor, a.n * LATTICE_S / 2)
         self.prepared = set()
         self.d = None
 
     def var(self, kind, mat, mode, out, skin, steps=None, restart=None, g=None):
-        v = {"floor": self.floor, "mat": mat, "mode": mode, "out": out, "skin": skin * 1e-3}
+        v = {"floor": self.floor, "mat": mat, "mode": mode, "out": out, "skin": skin * 1e-3,
+             "n": self.a.n}
         if steps:
             v["steps"] = steps
             v["chunks"] = self.a.chunks if steps > 1 else 1
@@ -267,7 +270,7 @@ class Column(Bench):
     def restart(self, kind, mat, phase):
         """The restart file of phase settled (mode settle) or gas (mode gas); made if missing."""
         mode, name = {"settled": ("settle", "settled.restart"), "gas": ("gas", "gas.restart")}[phase]
-        d = os.path.join(self.a.work, "prepare", f"{kind}_{mat}_{mode}")
+        d = os.path.join(self.a.work, "prepare", f"{kind}_{mat}_{mode}{self.suffix}")
         path = os.path.join(d, name)
         if (self.a.prepare and d not in self.prepared) or not os.path.exists(path):
             self.prepared.add(d)
@@ -286,17 +289,18 @@ class Column(Bench):
         """The volume-equivalent diameter of the rock, from the rocks' mass (a 1-step run)."""
         if self.d is None:
             out = os.path.join(self.a.work, "mass")
-            v = {"floor": self.floor, "mat": mat, "mode": "free", "out": out, "steps": 1, "skin": 0.001}
+            v = {"floor": self.floor, "mat": mat, "mode": "free", "out": out, "steps": 1, "skin": 0.001,
+                 "n": self.a.n}
             r = run(self.command("rocks", v), out, 600)
             m = r["out_mass"] / r["out_atoms"]
             self.d = (6.0 * m / (math.pi * RHO)) ** (1.0 / 3.0)
-            self.rock_mass = r["out_mass"]
+            self.rock_mass = m
             print(f"rock mass {m:.6e} kg: sphere diameter {1e3 * self.d:.6f} mm", flush=True)
         return self.d
 
     def measure(self, kind, mat, phase, skin, rep):
         a = self.a
-        out = os.path.join(a.work, "runs", f"{a.label}_{kind}_{mat}_{phase}_skin{skin}_{rep}")
+        out = os.path.join(a.work, "runs", f"{a.label}_{kind}_{mat}_{phase}_skin{skin}_{rep}{self.suffix}")
         factor = a.sphere_factor if kind == "spheres" else 1
         steps = {"settled": a.steps, "free": a.free_steps, "gas": a.gas_steps}[phase] * factor
 
@@ -311,13 +315,14 @@ class Column(Bench):
             return cmd if n else (cmd, steps)
 
         r = self.timed((kind, mat, phase, skin), cmd_of, out, a.run_timeout)
-        r.update(kind=kind, mat=mat, phase=phase, skin=skin, rep=rep)
+        r.update(kind=kind, mat=mat, phase=phase, skin=skin, rep=rep, n=a.n)
         if kind == "rocks":
             rows = [l.split() for l in open(os.path.join(out, "counters.txt"))
                     if l.strip() and not l.startswith("#")]
             r["counters"] = dict(zip(COUNTERS, [float(x) for x in rows[-1][1:]]))
-        elif "out_mass" in r and abs(r["out_mass"] / self.rock_mass - 1) > 1e-6:
-            sys.exit(f"the beds differ in mass: spheres {r['out_mass']}, rocks {self.rock_mass}")
+        elif "out_mass" in r and abs(r["out_mass"] / r["out_atoms"] / self.rock_mass - 1) > 1e-6:
+            sys.exit(f"a sphere's mass {r['out_mass'] / r['out_atoms']} kg is not a rock's "
+                     f"{self.rock_mass} kg")
         self.results.append(r)
         self.save()
         return r
@@ -357,7 +362,9 @@ def column_summary(results):
     the ratios at those skins: best / best, and the median of the per-repetition ratios."""
     runs = {}
     for r in results:
-        runs.setdefault((r["mat"], r["phase"]), {}).setdefault(r["skin"], {}).setdefault(
+        n = r.get("n", LATTICE_N)
+        mat = r["mat"] if n == LATTICE_N else f"{r['mat']}, {n ** 3} rocks"
+        runs.setdefault((mat, r["phase"]), {}).setdefault(r["skin"], {}).setdefault(
             (r["label"], r["rep"]), {})[r["kind"]] = r
     out = {}
     for key, skins in runs.items():
@@ -623,6 +630,8 @@ def main():
     ap.add_argument("--phases", nargs="+", default=["settled", "free", "gas"],
                     choices=["settled", "free", "gas"])
     ap.add_argument("--skins", nargs="+", type=float, default=[0.2, 0.4, 0.7, 1.0, 1.5])
+    ap.add_argument("--n", type=int, default=LATTICE_N,
+                    help="n^3 rocks (and spheres) on an n x n x n lattice, the column n x 4.5 mm wide")
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--steps", type=int, default=100, help="rocks' steps per chunk in the settled phase")
     ap.add_argument("--free-steps", type=int, default=1000)
