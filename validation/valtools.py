@@ -5,6 +5,8 @@ Scripts put this folder on sys.path from their own location, e.g.
 """
 import os
 import platform
+import re
+import resource
 import subprocess
 import sys
 
@@ -46,6 +48,27 @@ def stats_columns(tool, wanted=()):
     if missing:
         sys.exit(f"{tool} has no column {missing}")
     return cols
+
+
+def run_measured(cmd, cwd, env, timeout):
+    """Runs `cmd` in cwd (created) with its output in cwd/screen.txt; returns (exit code, the
+    output, the CPU seconds of the run and its children)."""
+    os.makedirs(cwd, exist_ok=True)
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    with open(os.path.join(cwd, "screen.txt"), "w") as f:
+        p = subprocess.run(cmd, cwd=cwd, env=env, stdout=f, stderr=subprocess.STDOUT,
+                           timeout=timeout)
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    with open(os.path.join(cwd, "screen.txt"), errors="replace") as f:
+        text = f.read()
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    return p.returncode, text, cpu
+
+
+def run_problems(text):
+    """What makes a run's output unusable: an ERROR, lost atoms, a nan or inf."""
+    return [w for w, pat in (("ERROR", r"^ERROR"), ("lost atoms", r"Lost atoms"),
+                             ("nan", r"\b(nan|-nan|inf)\b")) if re.search(pat, text, re.M | re.I)]
 
 
 def run_deck(exe, deck, variables, cwd, screen, threads=1, exit_on_error=False):

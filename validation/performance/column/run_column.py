@@ -49,7 +49,6 @@ import math
 import os
 import platform
 import re
-import resource
 import shlex
 import statistics
 import subprocess
@@ -173,24 +172,17 @@ def parse(text):
                 r["out_" + k] = float(v)
             except ValueError:
                 pass
-    r["bad"] = [w for w, pat in (("ERROR", r"^ERROR"), ("lost atoms", r"Lost atoms"),
-                                 ("nan", r"\b(nan|-nan|inf)\b")) if re.search(pat, text, re.M | re.I)]
+    r["bad"] = valtools.run_problems(text)
     r["warnings"] = sorted(set(re.findall(r"^WARNING.*$", text, re.M)))
     return r
 
 
 def run(cmd, cwd, timeout):
-    env = dict(os.environ, OMP_NUM_THREADS="1")
-    os.makedirs(cwd, exist_ok=True)
-    before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    with open(os.path.join(cwd, "screen.txt"), "w") as f:
-        p = subprocess.run(cmd, cwd=cwd, env=env, stdout=f, stderr=subprocess.STDOUT, timeout=timeout)
-    after = resource.getrusage(resource.RUSAGE_CHILDREN)
-    text = open(os.path.join(cwd, "screen.txt"), errors="replace").read()
+    code, text, cpu = valtools.run_measured(cmd, cwd, dict(os.environ, OMP_NUM_THREADS="1"), timeout)
     r = parse(text)
-    r["cpu"] = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
-    if p.returncode != 0 or r["bad"] or "loop" not in r:
-        sys.exit(f"run failed ({p.returncode}, {r['bad']}): {shlex.join(cmd)}\n"
+    r["cpu"] = cpu
+    if code != 0 or r["bad"] or "loop" not in r:
+        sys.exit(f"run failed ({code}, {r['bad']}): {shlex.join(cmd)}\n"
                  f"see {cwd}/screen.txt:\n{text[-1500:]}")
     return r
 

@@ -40,7 +40,6 @@ import json
 import os
 import platform
 import re
-import resource
 import shlex
 import subprocess
 import sys
@@ -101,8 +100,7 @@ def parse(text):
     m = re.search(r"pile timing: fix tri/wall ([\d.eE+-]+) s", text)
     if m:
         r["wall"] = float(m[1])
-    r["bad"] = [w for w, pat in (("ERROR", r"^ERROR"), ("lost atoms", r"Lost atoms"),
-                                 ("nan", r"\b(nan|-nan|inf)\b")) if re.search(pat, text, re.M | re.I)]
+    r["bad"] = valtools.run_problems(text)
     return r
 
 
@@ -148,16 +146,11 @@ class Bench:
 
     def run(self, cmd, cwd, threads, timeout):
         env = dict(os.environ, OMP_NUM_THREADS=str(threads), **MPI_ENV)
-        before = resource.getrusage(resource.RUSAGE_CHILDREN)
-        with open(os.path.join(cwd, "screen.txt"), "w") as f:
-            p = subprocess.run(cmd, cwd=cwd, env=env, stdout=f, stderr=subprocess.STDOUT,
-                               timeout=timeout)
-        after = resource.getrusage(resource.RUSAGE_CHILDREN)
-        text = open(os.path.join(cwd, "screen.txt"), errors="replace").read()
+        code, text, cpu = valtools.run_measured(cmd, cwd, env, timeout)
         r = parse(text)
-        r["cpu"] = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
-        if p.returncode != 0 or r["bad"] or "loop" not in r:
-            sys.exit(f"run failed ({p.returncode}, {r['bad']}): {shlex.join(cmd)}\n"
+        r["cpu"] = cpu
+        if code != 0 or r["bad"] or "loop" not in r:
+            sys.exit(f"run failed ({code}, {r['bad']}): {shlex.join(cmd)}\n"
                      f"see {cwd}/screen.txt:\n{text[-1500:]}")
         return r
 
