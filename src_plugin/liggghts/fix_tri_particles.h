@@ -34,6 +34,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <utility>
@@ -124,6 +125,14 @@ public:
     return (atom->rmass[i] / s.volume) * s.inertia_per_density;
   }
   double epsilon() const { return epsilon_; }
+  // m, the largest ball lift of the shapes (tri::Shape::ball_lift; 0 where none is a ball): two
+  // balls' triangle search reaches that much further (tri::particle_pair_cutoff).
+  double largest_ball_lift() const {
+    double most = 0.0;
+    for (const tri::Shape &s : shapes_)
+      most = std::max(most, s.ball_lift);
+    return most;
+  }
   // True with `layer inside` (the default): the soft layer lies inside the given meshes.
   bool layer_inside() const { return layer_inside_; }
   // A wall's soft layer when fix tri/wall gives none (m): none with the layer inside (a wall's

@@ -1,9 +1,13 @@
 // smooth_surface.h: the lifts of a finely meshed ball rebuild its sphere; facets that are the
-// body (a cube, a rock) get none; the smooth peak of a ball on a plane is the sphere's.
+// body (a cube, a rock) get none; the smooth peak of a ball on a plane is the sphere's. The
+// corners' spheres of a ball are its sphere, and two balls meet as their spheres
+// (contact/ball_contact.h); a cube, a rock, a flat plate and an ellipsoid are no balls.
 #include "body/random_rock.h"
 #include "body/smooth_surface.h"
+#include "contact/ball_contact.h"
 #include "contact/contact_polygon.h"
 #include "contact/smooth_peak.h"
+#include "geometry/triangle_soa.h"
 #include "test_meshes.h"
 
 #include <Eigen/Geometry>
@@ -92,6 +96,128 @@ TEST(SmoothSurface, PeakOfABallFacetOnAPlaneIsTheSpheres) {
   EXPECT_NEAR(best_point.x(), 0.0, 1e-4);
   EXPECT_NEAR(best_point.y(), 0.0, 1e-4);
   EXPECT_NEAR(std::abs(best_normal.z()), 1.0, 1e-9);
+}
+
+TEST(SmoothSurface, CornerSpheresOfAnIcosphereAreItsSphere) {
+  for (int level : {3, 4, 5}) {
+    const tri::TriangleMesh ball = tri_test::icosphere(level); // unit sphere
+    const std::vector<tri::SurfaceSphere> spheres = tri::corner_spheres(ball);
+    ASSERT_EQ(spheres.size(), 3 * ball.triangles.size());
+    double worst_centre = 0.0, worst_radius = 0.0, least_weight = 1.0;
+    for (const tri::SurfaceSphere &s : spheres) {
+      worst_centre = std::max(worst_centre, s.centre.norm());
+      worst_radius = std::max(worst_radius, std::abs(s.radius - 1.0));
+      least_weight = std::min(least_weight, s.weight);
+    }
+    // Points on a sphere determine it up to rounding (the fit's condition ~ (R / h)^2).
+    EXPECT_LT(worst_centre, 1e-10) << "level " << level;
+    EXPECT_LT(worst_radius, 1e-10) << "level " << level;
+    EXPECT_EQ(least_weight, 1.0) << "level " << level;
+    // The sphere rises above the facets by their sag: R (1 - cos(half the facet's angle)).
+    double sag = 0.0;
+    for (int t = 0; t < ball.num_triangles(); ++t) {
+      const Vector3d p0 = ball.corner(t, 0);
+      const Vector3d n = (ball.corner(t, 1) - p0).cross(ball.corner(t, 2) - p0).normalized();
+      sag = std::max(sag, 1.0 - p0.dot(n));
+    }
+    EXPECT_NEAR(tri::max_ball_sag(ball, spheres), sag, 1e-10) << "level " << level;
+  }
+}
+
+TEST(SmoothSurface, BodiesThatAreNoBallsGetNoSpheres) {
+  EXPECT_TRUE(tri::corner_spheres(tri_test::box()).empty());
+  tri::RockParameters rock;
+  rock.ntri = 40;
+  rock.size = 0.004;
+  rock.seed = 7;
+  EXPECT_TRUE(tri::corner_spheres(tri::random_rock(rock)).empty());
+  // An ellipsoid of axes 1, 1, 0.6: smooth, but round only about its poles (an umbilic, radius
+  // 1 / 0.6); about its equator its curvatures differ by 2.8 times and no sphere fits.
+  tri::TriangleMesh ellipsoid = tri_test::icosphere(4);
+  for (Vector3d &v : ellipsoid.vertices)
+    v.z() *= 0.6;
+  const std::vector<tri::SurfaceSphere> spheres = tri::corner_spheres(ellipsoid);
+  ASSERT_EQ(spheres.size(), 3 * ellipsoid.triangles.size());
+  double equator = 0.0, pole = 1.0;
+  for (int t = 0; t < ellipsoid.num_triangles(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const double z = std::abs(ellipsoid.corner(t, k).z());
+      if (z < 0.3)
+        equator = std::max(equator, spheres[3 * t + k].weight);
+      if (z > 0.59)
+        pole = std::min(pole, spheres[3 * t + k].weight);
+    }
+  EXPECT_EQ(equator, 0.0);
+  EXPECT_GT(pole, 0.9);
+}
+
+// Two unit icospheres of level 4, turned at random, their centres d apart along a random line,
+// through the reduction's contact point (ball_contacts reads its triangles and point): the
+// contact is the spheres', overlap 2 - d on the line of centres, the point midway through it.
+TEST(BallContact, TwoIcospheresMeetAsSpheres) {
+  const tri::TriangleMesh ball = tri_test::icosphere(4);
+  const std::vector<tri::SurfaceSphere> spheres = tri::corner_spheres(ball);
+  const tri::TriangleSoA body = tri::to_soa(ball);
+  for (int trial = 0; trial < 6; ++trial) {
+    const Eigen::Quaterniond qa(Eigen::AngleAxisd(0.3 + trial, Vector3d(1, 2, 3 - trial).normalized()));
+    const Eigen::Quaterniond qb(Eigen::AngleAxisd(1.1 * trial, Vector3d(-2, trial, 1).normalized()));
+    const Vector3d line = Vector3d(std::cos(trial), std::sin(2.0 * trial), 0.4).normalized();
+    const double d = 2.0 - 1e-3 * (1 + trial);
+    const Vector3d xa(0.1, -0.2, 0.3), xb = xa + d * line;
+    tri::TriangleSoA wa = body, wb = body;
+    for (std::size_t k = 0; k < wa.x.size(); ++k) {
+      const Vector3d pa = xa + qa * Vector3d(body.x[k], body.y[k], body.z[k]);
+      const Vector3d pb = xb + qb * Vector3d(body.x[k], body.y[k], body.z[k]);
+      wa.x[k] = pa.x(), wa.y[k] = pa.y(), wa.z[k] = pa.z();
+      wb.x[k] = pb.x(), wb.y[k] = pb.y(), wb.z[k] = pb.z();
+    }
+    // The facets nearest the line of centres on either side, as the reduction would name them.
+    auto nearest = [&](const tri::TriangleSoA &t, const Vector3d &target) {
+      int best = 0;
+      double best_d2 = 1e300;
+      for (int k = 0; k < t.num_triangles(); ++k) {
+        const Vector3d c = (t.vertex(k, 0) + t.vertex(k, 1) + t.vertex(k, 2)) / 3.0;
+        if ((c - target).squaredNorm() < best_d2) {
+          best_d2 = (c - target).squaredNorm();
+          best = k;
+        }
+      }
+      return best;
+    };
+    const Vector3d mid = xa + 0.5 * d * line;
+    std::vector<tri::ContactPoint> points(1);
+    points[0].tri_a = nearest(wa, mid);
+    points[0].tri_b = nearest(wb, mid);
+    points[0].point = mid + Vector3d(1e-3, -2e-3, 0.0); // the facets' point is off the line
+    points[0].normal = Vector3d(0.1, 0.0, 1.0).normalized();
+    points[0].overlap = points[0].energy_overlap = 1e-4;
+    tri::ball_contacts({&wa, spheres.data(), xa, qa, 0.0}, {&wb, spheres.data(), xb, qb, 0.0},
+                       points);
+    ASSERT_EQ(points.size(), 1u);
+    EXPECT_NEAR(points[0].overlap, 2.0 - d, 1e-12) << "trial " << trial;
+    EXPECT_NEAR(points[0].energy_overlap, 2.0 - d, 1e-12);
+    EXPECT_LT((points[0].normal - line).norm(), 1e-12);
+    EXPECT_LT((points[0].point - mid).norm(), 1e-12);
+  }
+}
+
+// Spheres apart (their facets within the widened layer, the spheres not yet touching): no
+// contact point is left.
+TEST(BallContact, SpheresApartLeaveNoPoint) {
+  const tri::TriangleMesh ball = tri_test::icosphere(3);
+  const std::vector<tri::SurfaceSphere> spheres = tri::corner_spheres(ball);
+  const tri::TriangleSoA body = tri::to_soa(ball);
+  tri::TriangleSoA wb = body;
+  for (double &x : wb.x)
+    x += 2.0 + 1e-6;
+  std::vector<tri::ContactPoint> points(1);
+  points[0].tri_a = 0;
+  points[0].tri_b = 0;
+  points[0].overlap = 1e-4;
+  const Eigen::Quaterniond id = Eigen::Quaterniond::Identity();
+  tri::ball_contacts({&body, spheres.data(), Vector3d::Zero(), id, 0.0},
+                     {&wb, spheres.data(), Vector3d(2.0 + 1e-6, 0, 0), id, 0.0}, points);
+  EXPECT_TRUE(points.empty());
 }
 
 } // namespace

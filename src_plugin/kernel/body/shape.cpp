@@ -136,6 +136,8 @@ void measure_kernel_surface(Shape &shape, const TriangleMesh &inner) {
   shape.thinnest_extent = thinnest_extent(shape.soa);
   shape.edge_bulge = edge_bulges(inner);
   shape.surface_lift = max_lift(shape.edge_bulge);
+  shape.corner_spheres = corner_spheres(inner);
+  shape.ball_lift = max_ball_sag(inner, shape.corner_spheres);
   shape.inner_radius = std::sqrt(r2);
 }
 

@@ -16,6 +16,7 @@
 
 #include "body/mass_properties.h"
 #include "body/shape_error.h"
+#include "body/smooth_surface.h"
 #include "geometry/triangle_mesh.h"
 #include "geometry/triangle_soa.h"
 
@@ -59,6 +60,10 @@ struct Shape {
   // triangle (m, rotation invariant); empty for a body that is its facets.
   std::vector<double> edge_bulge;
   double surface_lift = 0.0; // m, the largest lift (smooth_surface.h max_lift); 0 without
+  // Where the surface is a ball (smooth_surface.h corner_spheres): 3 spheres per triangle of
+  // `soa`, whose radius plus `layer`'s epsilon is the contact surface's; empty where none is.
+  std::vector<SurfaceSphere> corner_spheres;
+  double ball_lift = 0.0; // m, how far those spheres rise above soa's facets (max_ball_sag)
   // The principal axes as columns, in the input frame: the rotation from the body (principal)
   // frame to the input frame (orthonormal, determinant +1; MassProperties::principal_axes).
   Eigen::Matrix3d principal_axes = Eigen::Matrix3d::Identity();

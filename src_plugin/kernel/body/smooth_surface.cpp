@@ -52,9 +52,15 @@ Vector3d fitted_normal(const TriangleMesh &mesh, int v, const std::vector<int> &
   return std::isfinite(n.norm()) ? Vector3d(n.normalized()) : guess;
 }
 
-} // namespace
+// Each vertex's normal (the quadric fit below) and smoothness (1 smooth, 0 a corner of the body),
+// and its ring of neighbours.
+struct VertexFrames {
+  std::vector<Vector3d> normal;
+  std::vector<double> smooth;
+  std::vector<std::vector<int>> ring;
+};
 
-std::vector<double> edge_bulges(const TriangleMesh &mesh) {
+VertexFrames vertex_frames(const TriangleMesh &mesh) {
   const int nt = mesh.num_triangles();
   const std::size_t nv = mesh.vertices.size();
   std::vector<Vector3d> face(nt, Vector3d::Zero()), normal(nv, Vector3d::Zero());
@@ -106,6 +112,60 @@ std::vector<double> edge_bulges(const TriangleMesh &mesh) {
   std::vector<double> smooth(nv);
   for (std::size_t v = 0; v < nv; ++v)
     smooth[v] = 1.0 - smoothstep01((deviation[v] - kSmoothVertexAngle) / kSmoothVertexAngle);
+  return {std::move(normal), std::move(smooth), std::move(ring)};
+}
+
+// The sphere through vertex p and its ring: the centre p + u with 2 u . d = |d|^2 for every
+// neighbour at p + d, least squares (exact for points on a sphere, whatever the normals). The
+// vertex's ball weight fades from 1 to 0 where that sphere stops describing the surface: where
+// it bends too little to tell from a plane (a flat face, where the facets are exact), where the
+// ring leaves the sphere by more than a share of its sag (a cylinder, an ellipsoid's flanks: a
+// sphere is the wrong body there), or where it is concave.
+SurfaceSphere ring_sphere(const TriangleMesh &mesh, int v, const std::vector<int> &ring,
+                          const Vector3d &normal, double smooth) {
+  SurfaceSphere s;
+  s.centre = mesh.vertices[v];
+  if (!(smooth > 0.0) || ring.size() < 4 || normal.isZero())
+    return s;
+  const Vector3d p = mesh.vertices[v];
+  Eigen::Matrix<double, Eigen::Dynamic, 3> A(ring.size(), 3);
+  Eigen::VectorXd rhs(ring.size());
+  double h = 0.0;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const Vector3d d = mesh.vertices[ring[i]] - p;
+    A.row(i) = d.transpose();
+    rhs(i) = 0.5 * d.squaredNorm();
+    h = std::max(h, d.norm());
+  }
+  const Eigen::ColPivHouseholderQR<Eigen::Matrix<double, Eigen::Dynamic, 3>> qr(A);
+  if (qr.rank() < 3)
+    return s;
+  const Vector3d u = qr.solve(rhs);
+  const double radius = u.norm();
+  if (!std::isfinite(radius) || !(radius > 0.0) || u.dot(normal) >= 0.0)
+    return s; // no sphere, or a concave one
+  double misfit = 0.0, sag = 0.0;
+  for (int q : ring) {
+    const Vector3d d = mesh.vertices[q] - p;
+    misfit = std::max(misfit, std::abs((d - u).norm() - radius));
+    sag = std::max(sag, 0.5 * d.squaredNorm() / radius);
+  }
+  const double bend = h / radius; // the angle the surface turns over one edge, rad
+  const double curved = smoothstep01((bend - kBallMinBend) / kBallMinBend);
+  const double fits = 1.0 - smoothstep01((misfit / sag - kBallMisfit) / kBallMisfit);
+  s.centre = p + u;
+  s.radius = radius;
+  s.weight = smooth * curved * fits;
+  return s;
+}
+
+} // namespace
+
+std::vector<double> edge_bulges(const TriangleMesh &mesh) {
+  const int nt = mesh.num_triangles();
+  const VertexFrames frames = vertex_frames(mesh);
+  const std::vector<Vector3d> &normal = frames.normal;
+  const std::vector<double> &smooth = frames.smooth;
   std::vector<double> bulge(3 * static_cast<std::size_t>(nt), 0.0);
   bool any = false;
   for (int t = 0; t < nt; ++t)
@@ -122,6 +182,42 @@ std::vector<double> edge_bulges(const TriangleMesh &mesh) {
   if (!any)
     bulge.clear();
   return bulge;
+}
+
+std::vector<SurfaceSphere> corner_spheres(const TriangleMesh &mesh) {
+  const VertexFrames frames = vertex_frames(mesh);
+  const std::size_t nv = mesh.vertices.size();
+  std::vector<SurfaceSphere> vertex(nv);
+  bool any = false;
+  for (std::size_t v = 0; v < nv; ++v) {
+    vertex[v] = ring_sphere(mesh, static_cast<int>(v), frames.ring[v], frames.normal[v],
+                            frames.smooth[v]);
+    any = any || vertex[v].weight > 0.0;
+  }
+  std::vector<SurfaceSphere> corners;
+  if (!any)
+    return corners;
+  corners.reserve(3 * static_cast<std::size_t>(mesh.num_triangles()));
+  for (const auto &t : mesh.triangles)
+    for (int k = 0; k < 3; ++k)
+      corners.push_back(vertex[t[k]]);
+  return corners;
+}
+
+double max_ball_sag(const TriangleMesh &mesh, const std::vector<SurfaceSphere> &corners) {
+  double most = 0.0;
+  for (std::size_t t = 0; 3 * t + 2 < corners.size(); ++t) {
+    const Vector3d p0 = mesh.corner(static_cast<int>(t), 0);
+    const Vector3d n = (mesh.corner(static_cast<int>(t), 1) - p0)
+                           .cross(mesh.corner(static_cast<int>(t), 2) - p0)
+                           .normalized();
+    for (int k = 0; k < 3; ++k) {
+      const SurfaceSphere &s = corners[3 * t + k];
+      if (s.weight > 0.0 && n.allFinite()) // the sphere's top above the facet's plane
+        most = std::max(most, s.radius - (p0 - s.centre).dot(n));
+    }
+  }
+  return most;
 }
 
 double max_lift(const std::vector<double> &bulges) {

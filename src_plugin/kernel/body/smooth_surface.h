@@ -40,10 +40,37 @@
 namespace tri {
 
 constexpr double kSmoothVertexAngle = 0.15; // rad: facets within it of a vertex normal: smooth
+// A vertex's ball (corner_spheres): the surface must turn by at least this angle over an edge
+// (rad; fully from twice it: a plane is not a ball), and its ring must stay within this share of
+// its sag of the sphere (fully within half of it: a cylinder or a flat ellipsoid is not a ball).
+constexpr double kBallMinBend = 2e-3;
+constexpr double kBallMisfit = 0.05;
 
 // Three lifts per triangle, for its edges (v0, v1), (v1, v2), (v2, v0) (m); empty when every
 // edge's is 0 (no smooth surface: the facets are the body). Precondition: a valid closed mesh.
 std::vector<double> edge_bulges(const TriangleMesh &mesh);
+
+// Where a smooth surface is a ball: the sphere through a vertex and its neighbours (body frame,
+// as the mesh) and how far it describes the surface there (weight 1: the vertex's smoothness,
+// 0 where the facets are the body, where the surface is flat, concave or not round). Between
+// two such surfaces a contact is that of their spheres (contact/ball_contact.h): two finely
+// meshed balls meet as balls, at the sphere overlap R_a + R_b - |c_a - c_b| on the line of
+// centres, which the facets (each ball short of its sphere by up to its sag, the deepest point
+// a vertex off that line) and the lifts measured along facet pairs' bisectors both miss; the
+// sphere's overlap is a potential, so an undamped collision keeps its energy.
+struct SurfaceSphere {
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero(); // m, body frame
+  double radius = 0.0;                              // m
+  double weight = 0.0;                              // [0, 1]
+};
+
+// Each triangle's three corners' spheres (3 per triangle, in the triangles' corner order); empty
+// where no vertex is a ball. Precondition: a valid closed mesh.
+std::vector<SurfaceSphere> corner_spheres(const TriangleMesh &mesh);
+
+// How far the corners' spheres rise above their facets' planes at most (m, >= 0): the contact
+// search between two balls reaches that much further (Body::ball_lift).
+double max_ball_sag(const TriangleMesh &mesh, const std::vector<SurfaceSphere> &corners);
 
 // The largest lift of any facet (m, >= 0): how far the smooth surface rises above the facets.
 // The contact search reaches that much further for such a body (body_interaction.h: Body::lift),

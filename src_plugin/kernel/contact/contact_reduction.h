@@ -89,6 +89,9 @@ struct ReductionParams {
   // the layer still count where edge lifts are given (their smooth surfaces may overlap); a
   // contact point whose overlap comes out <= 0 is dropped.
   double surface_lift = 0.0;
+  // Keep the points whose overlap comes out <= 0 within surface_lift: between two balls the
+  // spheres decide (contact/ball_contact.h), not the facets.
+  bool keep_shallow = false;
   // Set each point's kind (ContactKind, contact_point.h): one pass over the class's members,
   // asked for only by a host that records its contacts.
   bool classify = false;

@@ -198,7 +198,7 @@ void reduce_region(std::vector<Raw> &raw, int begin, int end, double layer,
     const ContactClass cc{raw, group, work.cls, work.absorbed, c, work.seeds[c], layer};
     const ContactPoint p = make_point(cc, ref, faces, params.distance_tolerance, work);
     // Facets within reach of the lifts whose smooth surfaces do not overlap yet.
-    if (params.surface_lift > 0.0 && !(p.overlap > 0.0))
+    if (params.surface_lift > 0.0 && !params.keep_shallow && !(p.overlap > 0.0))
       continue;
     out.push_back(p);
     if (params.classify)

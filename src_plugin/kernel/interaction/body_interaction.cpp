@@ -1,5 +1,6 @@
 #include "interaction/body_interaction.h"
 
+#include "contact/ball_contact.h"
 #include "distance/separating_axis.h"
 #include "geometry/point_triangle.h"
 #include "model/contact_history.h"
@@ -48,6 +49,11 @@ Eigen::Vector3d reference_direction(const Body &a, const Body &b) {
   }
   const double length = towards.norm();
   return length > 0.0 ? Eigen::Vector3d(towards / length) : Eigen::Vector3d::UnitZ();
+}
+
+BallSide ball_side(const Body &body) {
+  return {body.triangles, body.spheres, body.pose.x, Eigen::Quaterniond(body.pose.q),
+          body.epsilon};
 }
 
 } // namespace
@@ -291,12 +297,16 @@ ReductionParams reduction_params(const Body &a, const Body &b, const Interaction
   params.reference_direction = reference_direction(a, b);
   params.distance_tolerance = certified_tolerance(s.distance, a.epsilon, b.epsilon);
   params.classify = classify;
-  // Smooth surfaces against walls only: between two smooth balls the peak measured along each
-  // facet pair's bisector did not conserve energy (validation/contact/deep, pairs: e 0.976
-  // undamped), so particle pairs keep their facets.
+  // Smooth surfaces against walls: between two smooth balls the peak measured along each facet
+  // pair's bisector did not conserve energy (validation/contact/deep, pairs: e 0.976
+  // undamped), so two balls meet as their spheres instead (ball_contacts, after the reduction),
+  // and other particle pairs keep their facets.
   if (b.is_wall()) {
     params.edge_bulge_a = a.edge_bulge;
     params.surface_lift = a.lift;
+  } else if (a.is_ball() && b.is_ball()) {
+    params.surface_lift = a.ball_lift + b.ball_lift;
+    params.keep_shallow = true;
   }
   return params;
 }
@@ -325,6 +335,8 @@ PairForceResult forces_from_contacts(const Body &a, const Body &b, const Interac
   deepen_contacts(*a.triangles, side_a, *b.triangles, side_b, layer, params.reference_direction,
                   params.link_length, scratch.points, scratch.depth);
   place_between_given_surfaces(a.epsilon, b.epsilon, scratch.points);
+  if (params.keep_shallow)
+    ball_contacts(ball_side(a), ball_side(b), scratch.points);
   PairForceResult r = pair_contact_force(scratch.points, a.state, b.state, s.coefficients, dt,
                                          history,
                                          scratch.record_contacts ? &scratch.records : nullptr);

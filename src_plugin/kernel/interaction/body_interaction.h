@@ -20,6 +20,7 @@
 // result does not depend on the other pairs run with it.
 #pragma once
 
+#include "body/smooth_surface.h"
 #include "contact/contact_reduction.h"
 #include "contact/penetration_depth.h"
 #include "distance/candidate_cache.h"
@@ -82,6 +83,11 @@ struct Body {
   // m, how far that surface rises above the facets at most (Shape::surface_lift): the triangle
   // search reaches epsilon + lift, the layer stays epsilon (contact_reduction.h, step 5b).
   double lift = 0.0;
+  // Where the surface is a ball (smooth_surface.h: corner_spheres, 3 per triangle in
+  // `triangles`' order, body frame); null elsewhere. Two balls meet as their spheres
+  // (contact/ball_contact.h), and their search reaches epsilon + ball_lift.
+  const SurfaceSphere *spheres = nullptr;
+  double ball_lift = 0.0; // m, Shape::ball_lift
   BodyState state;                        // mass <= 0 for a wall
   RigidPose pose; // a particle: x, orientation and bounding radius of `triangles`; unused for a wall
   // A particle: its body-frame triangles (those `pose` places; pose.frame points at them), so
@@ -90,10 +96,13 @@ struct Body {
   const TriangleSoA *frame = nullptr;
 
   bool is_wall() const { return !(state.mass > 0.0); }
-  // The triangle search's reach against `other`, m: the lift counts against walls only
-  // (body_interaction.cpp, reduction_params: particle pairs keep their facets).
+  bool is_ball() const { return spheres != nullptr; }
+  // The triangle search's reach against `other`, m: the lift counts against walls, the ball's
+  // lift against another ball (body_interaction.cpp, reduction_params).
   double reach_epsilon(const Body &other) const {
-    return other.is_wall() ? epsilon + lift : epsilon;
+    if (other.is_wall())
+      return epsilon + lift;
+    return is_ball() && other.is_ball() ? epsilon + ball_lift : epsilon;
   }
 };
 
@@ -130,9 +139,12 @@ bool proven_apart(const Body &a, const Body &b, const InteractionSettings &s,
 // particle_pair_cutoff. For a host that passes over such pairs before it builds their bodies:
 // they change nothing, and count as apart_result(stats) would (InteractionTally::add_passed).
 bool proven_apart_by_travel(const CandidateCache *kept, const Travel &travel, double cutoff);
-// The distance below which the triangles of two particles with soft layers eps_a and eps_b
-// touch (Body::reach_epsilon: a surface lift counts against walls only).
-inline double particle_pair_cutoff(double eps_a, double eps_b) { return eps_a + eps_b; }
+// The distance below which the triangles of two particles with soft layers eps_a and eps_b and
+// ball lifts lift_a and lift_b touch (Body::reach_epsilon; a lift counts between two balls).
+inline double particle_pair_cutoff(double eps_a, double eps_b, double lift_a = 0.0,
+                                   double lift_b = 0.0) {
+  return eps_a + eps_b + lift_a + lift_b;
+}
 // The result of a pair without contacts (proven apart, or a search that finds none): no force,
 // the history cleared. `history` as for plan_body_pair.
 PairForceResult apart_result(const Body &a, const Body &b, const InteractionSettings &s, double dt,
