@@ -125,12 +125,13 @@ public:
     return (atom->rmass[i] / s.volume) * s.inertia_per_density;
   }
   double epsilon() const { return epsilon_; }
-  // m, the largest ball lift of the shapes (tri::Shape::ball_lift; 0 where none is a ball): two
-  // balls' triangle search reaches that much further (tri::particle_pair_cutoff).
-  double largest_ball_lift() const {
+  // m, the largest lift of the shapes' surfaces (tri::Shape::ball_lift, surface_lift; 0 where
+  // all are their facets): a particle pair's triangle search may reach that much further on
+  // each side (tri::Body::reach_epsilon, tri::particle_pair_cutoff).
+  double largest_lift() const {
     double most = 0.0;
     for (const tri::Shape &s : shapes_)
-      most = std::max(most, s.ball_lift);
+      most = std::max({most, s.ball_lift, s.surface_lift});
     return most;
   }
   // True with `layer inside` (the default): the soft layer lies inside the given meshes.

@@ -85,7 +85,7 @@ void PairTriGran::collect_tasks() {
   // next rebuild (counting only the pairs within reach, every pair after one that came within
   // reach or left it named another's entry, and was looked up).
   std::size_t slot = 0;
-  const double lift = particles_->largest_ball_lift();
+  const double lift = particles_->largest_lift();
   const double cutoff =
       tri::particle_pair_cutoff(particles_->epsilon(), particles_->epsilon(), lift, lift);
   // Every neighbour pair every step, most of them apart: the arrays in locals, which the

@@ -297,16 +297,18 @@ ReductionParams reduction_params(const Body &a, const Body &b, const Interaction
   params.reference_direction = reference_direction(a, b);
   params.distance_tolerance = certified_tolerance(s.distance, a.epsilon, b.epsilon);
   params.classify = classify;
-  // Smooth surfaces against walls: between two smooth balls the peak measured along each facet
-  // pair's bisector did not conserve energy (validation/contact/deep, pairs: e 0.976
-  // undamped), so two balls meet as their spheres instead (ball_contacts, after the reduction),
-  // and other particle pairs keep their facets.
-  if (b.is_wall()) {
-    params.edge_bulge_a = a.edge_bulge;
-    params.surface_lift = a.lift;
-  } else if (a.is_ball() && b.is_ball()) {
+  // Smooth surfaces against facets (a wall, a cube's face, a rock): measured on the smooth
+  // one. Between two smooth surfaces the peak measured along each facet pair's bisector did not
+  // conserve energy (validation/contact/deep, pairs: e 0.976 undamped), so two balls meet as
+  // their spheres instead (ball_contacts, after the reduction), and other pairs of smooth
+  // surfaces keep their facets.
+  if (a.is_ball() && b.is_ball()) {
     params.surface_lift = a.ball_lift + b.ball_lift;
     params.keep_shallow = true;
+  } else if (smooth_on_facets(a, b)) {
+    params.edge_bulge_a = a.edge_bulge;
+    params.edge_bulge_b = b.edge_bulge;
+    params.surface_lift = a.lift + b.lift;
   }
   return params;
 }

@@ -97,14 +97,22 @@ struct Body {
 
   bool is_wall() const { return !(state.mass > 0.0); }
   bool is_ball() const { return spheres != nullptr; }
-  // The triangle search's reach against `other`, m: the lift counts against walls, the ball's
-  // lift against another ball (body_interaction.cpp, reduction_params).
+  bool is_smooth() const { return edge_bulge != nullptr; }
+  // The triangle search's reach against `other`, m: the ball's lift against another ball, the
+  // smooth surface's lift against facets (a wall's, a cube's), none between two smooth surfaces
+  // that are not both balls (body_interaction.cpp, reduction_params).
   double reach_epsilon(const Body &other) const {
-    if (other.is_wall())
-      return epsilon + lift;
-    return is_ball() && other.is_ball() ? epsilon + ball_lift : epsilon;
+    if (is_ball() && other.is_ball())
+      return epsilon + ball_lift;
+    return is_smooth() && !other.is_smooth() ? epsilon + lift : epsilon;
   }
 };
+
+// Whether exactly one of the two is a smooth surface (Body::edge_bulge) and the other its facets:
+// that one is measured on its smooth surface (reduction_params). A wall is its facets.
+inline bool smooth_on_facets(const Body &a, const Body &b) {
+  return a.is_smooth() != b.is_smooth() && !(a.is_ball() && b.is_ball());
+}
 
 // The separating axis the host keeps for one body pair between steps (separating_axis.h):
 // `axis` holds 3 doubles, world frame, pointing from a towards b, all zero for none. A stored
@@ -140,7 +148,7 @@ bool proven_apart(const Body &a, const Body &b, const InteractionSettings &s,
 // they change nothing, and count as apart_result(stats) would (InteractionTally::add_passed).
 bool proven_apart_by_travel(const CandidateCache *kept, const Travel &travel, double cutoff);
 // The distance below which the triangles of two particles with soft layers eps_a and eps_b and
-// ball lifts lift_a and lift_b touch (Body::reach_epsilon; a lift counts between two balls).
+// lifts lift_a and lift_b may touch (Body::reach_epsilon: 0 where the lift does not count).
 inline double particle_pair_cutoff(double eps_a, double eps_b, double lift_a = 0.0,
                                    double lift_b = 0.0) {
   return eps_a + eps_b + lift_a + lift_b;

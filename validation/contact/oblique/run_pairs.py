@@ -3,7 +3,8 @@
 pair tri/gran, tangential history) meeting head-on with a tangential speed, against two ideal
 balls of the icosphere's own mass and inertia (ideal_ball.py ideal_pair, a replica of
 LIGGGHTS's pair gran hooke/stiffness contact with tangential history and nve/sphere) and
-LIGGGHTS's own spheres.
+LIGGGHTS's own spheres; and a ball on another particle's facets: the same icospheres (levels
+3, 4) striking a cube particle at rest (in.on_cube), against the ideal ball on a plane.
 
   /usr/bin/python3 run_pairs.py [--exe build/src_plugin/driver/liggghts-tri] [--work /tmp/oblique_pairs]
                                 [--liggghts /usr/bin/liggghts] [--plot] [--label NAME]
@@ -16,7 +17,10 @@ omega' = omega_z. The reference is first checked against LIGGGHTS sphere pairs (
 I = 2/5 m r^2, r = R), then run with the mesh's mass and inertia. Errors: (vt'_tri - vt'_ref) /
 (vt / 2) and (omega'_tri - omega'_ref) R / (vt / 2), each ball's incoming tangential speed
 being vt / 2. A head-on frictionless diagnostic gives the restitution (ideal: 1) and the spin
-left. Prints the README tables; with --plot writes oblique_pairs.png next to this script.
+left. The ball on the cube: as run.py's wall impacts (errors over the incoming vt), each ball
+turned in its file by a random rotation of seed 11, 22, 33, 44 (`orient file`: the cube stays
+square to the axes). Prints the README tables; with --plot writes oblique_pairs.png next to
+this script.
 --exe of an older build shows what it did (the README's comparison). Needs Debian's numpy and
 matplotlib (/usr/bin/python3).
 """
@@ -32,7 +36,7 @@ REPO = os.path.abspath(os.path.join(HERE, "..", "..", ".."))
 sys.path.insert(0, os.path.join(REPO, "validation", "meshes"))
 sys.path.insert(0, os.path.join(REPO, "validation"))
 import meshgen  # noqa: E402
-from ideal_ball import DT, GAP, STEPS, ideal_pair  # noqa: E402
+from ideal_ball import DT, GAP, STEPS, ideal_ball, ideal_pair  # noqa: E402
 import valtools  # noqa: E402
 
 R, RHO, EPS = 0.002, 2500.0, 1e-5
@@ -44,21 +48,61 @@ SEEDS = (11, 22, 33, 44)
 TOL = 0.01
 QUIET = 20
 CONTACT_COL = 10  # in.pair's `contacts` column
+CUBE_LEVELS, CUBE_SIDE = (3, 4), 0.02
 
 
-def after(path):
-    """The last row of a pair trace, checked to be out of contact for the last QUIET rows
-    and to have touched at all."""
+def after(path, contact_col=CONTACT_COL):
+    """The last row of a trace, checked to be out of contact for the last QUIET rows and to
+    have touched at all."""
     rows = np.array(valtools.read_rows(path))
-    assert np.any(rows[:, CONTACT_COL] != 0), (path, "no contact")
-    assert np.all(rows[-QUIET:, CONTACT_COL] == 0), (path, "still in contact at the end")
+    assert np.any(rows[:, contact_col] != 0), (path, "no contact")
+    assert np.all(rows[-QUIET:, contact_col] == 0), (path, "still in contact at the end")
     return rows[-1]
 
 
-def run(exe, deck, work, name, values):
+def run(exe, deck, work, name, values, contact_col=CONTACT_COL):
     valtools.run_deck(exe, os.path.join(HERE, deck), dict(out=name, **values), work,
                       os.path.join(work, name + ".screen"))
-    return after(os.path.join(work, name))
+    return after(os.path.join(work, name), contact_col)
+
+
+def turned(verts, seed):
+    """verts turned by a random rotation (a uniform unit quaternion from `seed`)."""
+    q = np.random.default_rng(seed).normal(size=4)
+    w, x, y, z = q / np.linalg.norm(q)
+    rot = np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
+                    [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
+                    [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)]])
+    return [tuple(rot @ np.array(v)) for v in verts]
+
+
+def on_cube(exe, work, mass):
+    """The icospheres on the top face of a cube particle at rest: (level, series, ratio) ->
+    the worst |error| of vt' and omega' R over vt, over the seeds, and the worst |vz'/vn - 1|."""
+    meshgen.write_stl(os.path.join(work, "cube.stl"), *meshgen.cube(1, CUBE_SIDE))
+    out = {}
+    for level in CUBE_LEVELS:
+        verts, faces = meshgen.icosphere(level, R)
+        for seed in SEEDS:
+            meshgen.write_stl(os.path.join(work, "ico%d_s%d.stl" % (level, seed)),
+                              turned(verts, seed), faces)
+        m, inertia = mass[level]
+        for sname, kfac in SERIES:
+            for ratio in RATIOS:
+                vt = ratio * VN
+                ref = ideal_ball(m, inertia, R, KN, kfac * KN, MU, VN, vt)
+                worst, bounce = 0.0, 0.0
+                for seed in SEEDS:
+                    row = run(exe, "in.on_cube", work, "cube_l%d_kt%s_r%g_s%d.txt" % (
+                        level, sname.replace("/", "_"), ratio, seed),
+                        dict(mesh="ico%d_s%d.stl" % (level, seed), cube="cube.stl",
+                             side=CUBE_SIDE, R=R, eps=EPS, kn=KN, kt="%.17g" % (kfac * KN),
+                             mu=MU, vn=VN, vt="%.17g" % vt, gap=GAP, dt=DT, steps=STEPS),
+                        contact_col=8)
+                    worst = max(worst, abs(row[2] - ref[0]) / vt, abs(row[6] - ref[2]) * R / vt)
+                    bounce = max(bounce, abs(row[4] / VN - 1.0))
+                out[level, sname, ratio] = (worst, bounce)
+    return out
 
 
 def main():
@@ -117,7 +161,9 @@ def main():
                      dict(r=R, mass="%.17g" % mass[level][0], kn=KN, kt=KN, mu=0, vn=VN, vt=0,
                           gap=GAP, dt=DT, steps=STEPS))
         normal[level] = (np.array(bounce), np.array(spins), -sphere[1] / (0.5 * VN) - 1.0)
+    cube = on_cube(exe, args.work, mass)
     report(args, res, check, normal)
+    report_cube(cube)
     if args.plot:
         plot(res)
     return 0
@@ -167,6 +213,23 @@ def report(args, res, check, normal):
         bo, sp, sph = normal[level]
         print("| %d | %+.2e | %+.2e | %.2e |" % (level, bo[np.argmax(np.abs(bo))], sph,
                                                  sp.max()))
+
+
+def report_cube(cube):
+    print()
+    print("A ball on a cube particle at rest (side %g m, 12 triangles): worst |error| of vt' and "
+          "omega' R over vt against the ideal ball on a plane, and worst |vz'/vn - 1|, over the "
+          "%d turns:" % (CUBE_SIDE, len(SEEDS)))
+    print()
+    print("| kt / kn | vt / vn | " + " | ".join("level %d: vt', omega' | level %d: vz'" % (lv, lv)
+                                              for lv in CUBE_LEVELS) + " |")
+    print("|---|---|" + "---|---|" * len(CUBE_LEVELS))
+    for sname, _ in SERIES:
+        for ratio in RATIOS:
+            print("| %s | %g | " % (sname, ratio) + " | ".join(
+                "%.3f%% | %.4f%%" % (100 * cube[lv, sname, ratio][0],
+                                     100 * cube[lv, sname, ratio][1]) for lv in CUBE_LEVELS)
+                  + " |")
 
 
 def plot(res):
