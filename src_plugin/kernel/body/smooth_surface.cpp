@@ -52,10 +52,11 @@ Vector3d fitted_normal(const TriangleMesh &mesh, int v, const std::vector<int> &
   return std::isfinite(n.norm()) ? Vector3d(n.normalized()) : guess;
 }
 
-// Each vertex's normal (the quadric fit below) and smoothness (1 smooth, 0 a corner of the body),
-// and its ring of neighbours.
+// Each vertex's normal (the quadric fit below), the largest angle of its facets from it (rad),
+// its smoothness (1 smooth, 0 a corner of the body), and its ring of neighbours.
 struct VertexFrames {
   std::vector<Vector3d> normal;
+  std::vector<double> deviation;
   std::vector<double> smooth;
   std::vector<std::vector<int>> ring;
 };
@@ -112,20 +113,23 @@ VertexFrames vertex_frames(const TriangleMesh &mesh) {
   std::vector<double> smooth(nv);
   for (std::size_t v = 0; v < nv; ++v)
     smooth[v] = 1.0 - smoothstep01((deviation[v] - kSmoothVertexAngle) / kSmoothVertexAngle);
-  return {std::move(normal), std::move(smooth), std::move(ring)};
+  return {std::move(normal), std::move(deviation), std::move(smooth), std::move(ring)};
 }
 
 // The sphere through vertex p and its ring: the centre p + u with 2 u . d = |d|^2 for every
 // neighbour at p + d, least squares (exact for points on a sphere, whatever the normals). The
 // vertex's ball weight fades from 1 to 0 where that sphere stops describing the surface: where
-// it bends too little to tell from a plane (a flat face, where the facets are exact), where the
-// ring leaves the sphere by more than a share of its sag (a cylinder, an ellipsoid's flanks: a
-// sphere is the wrong body there), or where it is concave.
+// the facets are too coarse for it (kBallVertexAngle: its sag would be more than 0.6 % of the
+// radius), where it bends too little to tell from a plane (a flat face, where
+// the facets are exact), where the ring leaves the sphere by more than a share of its sag (a
+// cylinder, an ellipsoid's flanks: a sphere is the wrong body there), or where it is concave.
 SurfaceSphere ring_sphere(const TriangleMesh &mesh, int v, const std::vector<int> &ring,
-                          const Vector3d &normal, double smooth) {
+                          const Vector3d &normal, double deviation) {
   SurfaceSphere s;
   s.centre = mesh.vertices[v];
-  if (!(smooth > 0.0) || ring.size() < 4 || normal.isZero())
+  const double fine =
+      1.0 - smoothstep01((deviation - kBallVertexAngle) / (kSmoothVertexAngle - kBallVertexAngle));
+  if (!(fine > 0.0) || ring.size() < 4 || normal.isZero())
     return s;
   const Vector3d p = mesh.vertices[v];
   Eigen::Matrix<double, Eigen::Dynamic, 3> A(ring.size(), 3);
@@ -155,7 +159,7 @@ SurfaceSphere ring_sphere(const TriangleMesh &mesh, int v, const std::vector<int
   const double fits = 1.0 - smoothstep01((misfit / sag - kBallMisfit) / kBallMisfit);
   s.centre = p + u;
   s.radius = radius;
-  s.weight = smooth * curved * fits;
+  s.weight = fine * curved * fits;
   return s;
 }
 
@@ -191,7 +195,7 @@ std::vector<SurfaceSphere> corner_spheres(const TriangleMesh &mesh) {
   bool any = false;
   for (std::size_t v = 0; v < nv; ++v) {
     vertex[v] = ring_sphere(mesh, static_cast<int>(v), frames.ring[v], frames.normal[v],
-                            frames.smooth[v]);
+                            frames.deviation[v]);
     any = any || vertex[v].weight > 0.0;
   }
   std::vector<SurfaceSphere> corners;
