@@ -240,41 +240,15 @@ def main():
             lv, 100 * sp.mean(), 100 * sp.max(), 100 * bo.mean(),
             100 * bo[np.argmax(np.abs(bo))]))
 
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    fig, ax = plt.subplots(1, 2, figsize=(12, 4.8), sharey=True)
-    colours = {q: "C%d" % k for k, q in enumerate(RATIOS)}
-    floor = 1e-6
-    for col, (key, title) in enumerate((("ev", "rebound tangential velocity vt'"),
-                                        ("ew", "rebound spin omega'"))):
-        a = ax[col]
-        for sname, _ in SERIES:
-            style = "o-" if sname == "2/7" else "s--"
-            for ratio in RATIOS:
-                worst = [max(np.abs(res[lv, sname, ratio][key]).max(), floor) for lv in LEVELS]
-                mean = [max(np.abs(res[lv, sname, ratio][key]).mean(), floor) for lv in LEVELS]
-                a.plot(LEVELS, [100 * w for w in worst], style, color=colours[ratio],
-                       label="kt/kn %s, vt/vn %g (worst)" % (sname, ratio))
-                a.plot(LEVELS, [100 * w for w in mean], style[0], color=colours[ratio],
-                       mfc="none", ms=9, alpha=0.6)
-        a.axhline(100 * TOL, color="k", lw=1, ls=":", label="1 % target")
-        a.set_yscale("log")
-        a.set_xticks(LEVELS)
-        a.set_xticklabels(["%d\n(%d tri)" % (lv, 20 * 4 ** lv) for lv in LEVELS])
-        a.set_xlabel("icosphere level")
-        a.set_title(title)
-        a.grid(alpha=0.3, which="both")
-    ax[0].set_ylabel("|error| / incoming vt (%)  [omega': x R / vt]")
-    ax[1].legend(fontsize=7, ncol=2)
-    fig.suptitle("Oblique impact on a plane: icosphere (fix tri/wall) against the ideal ball of "
-                 "its mass, inertia and lever; lines: worst of %d orientations, open markers: "
-                 "mean |error|\nkn %g N/m, eps %g um (layer %s), vn %g m/s, mu %g, gamman = "
-                 "gammat = 0" % (len(SEEDS), KN, 1e6 * EPS, LAYER, VN, MU), fontsize=9)
-    fig.tight_layout()
-    out = os.path.join(HERE, "oblique.png" if LAYER == "inside" else "oblique_outside.png")
-    fig.savefig(out, dpi=110)
-    print("plot:", out)
+    from error_plot import plot_errors
+    plot_errors(res, LEVELS, SERIES, RATIOS, TOL,
+                "|error| / incoming vt (%)  [omega': x R / vt]",
+                "Oblique impact on a plane: icosphere (fix tri/wall) against the ideal ball of "
+                "its mass, inertia and lever; lines: worst of %d orientations, open markers: "
+                "mean |error|\nkn %g N/m, eps %g um (layer %s), vn %g m/s, mu %g, gamman = "
+                "gammat = 0" % (len(SEEDS), KN, 1e6 * EPS, LAYER, VN, MU),
+                os.path.join(HERE, "oblique.png" if LAYER == "inside" else "oblique_outside.png"),
+                means=True)
     return 0
 
 

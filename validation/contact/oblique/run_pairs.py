@@ -233,38 +233,13 @@ def report_cube(cube):
 
 
 def plot(res):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    fig, ax = plt.subplots(1, 2, figsize=(12, 4.8), sharey=True)
-    colours = {q: "C%d" % k for k, q in enumerate(RATIOS)}
-    floor = 1e-6
-    for col, (key, title) in enumerate((("ev", "rebound tangential velocity vt'"),
-                                        ("ew", "rebound spin omega'"))):
-        a = ax[col]
-        for sname, _ in SERIES:
-            style = "o-" if sname == "2/7" else "s--"
-            for ratio in RATIOS:
-                worst = [max(np.abs(res[lv, sname, ratio][key]).max(), floor) for lv in LEVELS]
-                a.plot(LEVELS, [100 * w for w in worst], style, color=colours[ratio],
-                       label="kt/kn %s, vt/vn %g" % (sname, ratio))
-        a.axhline(100 * TOL, color="k", lw=1, ls=":", label="1 % target")
-        a.set_yscale("log")
-        a.set_xticks(LEVELS)
-        a.set_xticklabels(["%d\n(%d tri)" % (lv, 20 * 4 ** lv) for lv in LEVELS])
-        a.set_xlabel("icosphere level")
-        a.set_title(title)
-        a.grid(alpha=0.3, which="both")
-    ax[0].set_ylabel("worst |error| over %d orientations / incoming vt (%%)" % len(SEEDS))
-    ax[1].legend(fontsize=7, ncol=2)
-    fig.suptitle("Ball meets ball: two icospheres (pair tri/gran) against two ideal balls of "
-                 "their mass and inertia\nkn %g N/m, eps %g um, relative vn %g m/s, mu %g, "
-                 "gamman = gammat = 0" % (KN, 1e6 * EPS, VN, MU), fontsize=9)
-    fig.tight_layout()
-    out = os.path.join(HERE, "oblique_pairs.png")
-    fig.savefig(out, dpi=110)
-    print("plot:", out)
-
+    from error_plot import plot_errors
+    plot_errors(res, LEVELS, SERIES, RATIOS, TOL,
+                "worst |error| over %d orientations / incoming vt (%%)" % len(SEEDS),
+                "Ball meets ball: two icospheres (pair tri/gran) against two ideal balls of "
+                "their mass and inertia\nkn %g N/m, eps %g um, relative vn %g m/s, mu %g, "
+                "gamman = gammat = 0" % (KN, 1e6 * EPS, VN, MU),
+                os.path.join(HERE, "oblique_pairs.png"))
 
 if __name__ == "__main__":
     sys.exit(main())
