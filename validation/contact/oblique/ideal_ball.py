@@ -8,13 +8,12 @@ import math
 DT, STEPS, GAP = 1e-6, 400, 1e-6
 
 
-def ideal_ball(m, inertia, r, kn, kt, mu, vn, vt, dt=DT, steps=STEPS, gap=GAP, lever_share=0.5):
+def ideal_ball(m, inertia, r, kn, kt, mu, vn, vt, dt=DT, steps=STEPS, gap=GAP):
     """A ball of mass m, moment of inertia `inertia`, radius r (lever r - overlap / 2, as
     LIGGGHTS's wall contact, surface_model_default.h) on the plane z = 0: LIGGGHTS's
     hooke/stiffness normal force kn overlap (gamman 0), tangential_model_history.h (shear += v_t
     dt, Ft = -kt shear, capped at mu Fn by rescaling the shear), nve/sphere's velocity Verlet,
-    starting at z = r + gap. Returns (vx, vz, omega_y) after `steps` steps. `lever_share`: the
-    lever is r - lever_share overlap (ideal_pair's 1)."""
+    starting at z = r + gap. Returns (vx, vz, omega_y) after `steps` steps."""
     z, vx, vz, wy = r + gap, vt, -vn, 0.0
     fx = fz = ty = 0.0
     shear = 0.0
@@ -27,7 +26,7 @@ def ideal_ball(m, inertia, r, kn, kt, mu, vn, vt, dt=DT, steps=STEPS, gap=GAP, l
         delta = r - z
         if delta > 0:
             fn = kn * delta
-            lever = r - lever_share * delta
+            lever = r - 0.5 * delta
             shear += (vx - lever * wy) * dt
             ft = -kt * shear
             if abs(ft) > mu * fn:
@@ -41,7 +40,6 @@ def ideal_ball(m, inertia, r, kn, kt, mu, vn, vt, dt=DT, steps=STEPS, gap=GAP, l
         vz += h * fz / m
         wy += h * ty / inertia
     return vx, vz, wy
-
 
 
 def ideal_pair(m, inertia, r, kn, kt, mu, vn, vt, dt=DT, steps=STEPS, gap=GAP):
