@@ -362,6 +362,7 @@ void FixTriParticles::build_body(int i) {
   b.lift = shape.surface_lift;
   b.spheres = shape.corner_spheres.empty() ? nullptr : shape.corner_spheres.data();
   b.ball_lift = shape.ball_lift;
+  b.convex = shape.convex;
   b.state.x = Eigen::Vector3d(x[i][0], x[i][1], x[i][2]);
   b.state.v = Eigen::Vector3d(atom->v[i][0], atom->v[i][1], atom->v[i][2]);
   b.state.omega = Eigen::Vector3d(atom->omega[i][0], atom->omega[i][1], atom->omega[i][2]);

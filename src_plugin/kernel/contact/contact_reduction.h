@@ -9,7 +9,8 @@
 //
 // Out: one ContactPoint (contact_point.h: fields, units, frames) per contact patch and normal
 // class, deepest first. Raw contacts closer than link_length form a patch (step 1); normals
-// within split_angle of the patch's deepest unassigned one a class (2); a class that is a
+// within split_angle of the patch's deepest unassigned one a class (2; with
+// distinct_spot_distance, not those far from it at a clearly other normal); a class that is a
 // deeper class's rim is absorbed into it (3). Per class (4-6): kn overlap along `normal` at
 // `point` is the gradient of the elastic energy 1/2 kn energy_overlap^2 (5: a smooth maximum of
 // the members' overlaps; 5b: faces lying flat, from their contact polygons; 5c: curved patches,
@@ -60,6 +61,9 @@ constexpr double kFlatPatchBand = 0.1;
 // patch of facets spreads by about its radius over the ball's (0.1 for a soft contact of a
 // 2 mm icosphere); two flat faces meshed by any triangles by rounding only.
 constexpr double kFlatGradientSpread = 0.01;
+// Step 2: normals this far apart (30 degrees), at points farther apart than
+// ReductionParams::distinct_spot_distance, are two contacts of a non-convex pair.
+constexpr double kDistinctSpotAngle = 0.5235987755982988;
 
 enum class ReductionMethod {
   clusters,        // the reduction described above (default)
@@ -71,6 +75,10 @@ struct ReductionParams {
   ReductionMethod method = ReductionMethod::clusters;
   double link_length = 0.0; // m, clusters: see recommended_link_length(); must be > 0
   double split_angle = 0.7853981633974483; // rad (45 deg), clusters: normal-class half-angle
+  // m, clusters: > 0 keeps a member out of the seed's class when it lies farther than this
+  // from the seed and its normal is more than kDistinctSpotAngle off (step 2: two spots of a
+  // non-convex pair); 0: the angle alone decides.
+  double distinct_spot_distance = 0.0;
   double min_width = 0.0; // m, paper_min_width: the minimum mesh width of the two meshes
   // Unit, from a towards b; used only where a normal is otherwise undefined (see above).
   Eigen::Vector3d reference_direction = Eigen::Vector3d::UnitZ();

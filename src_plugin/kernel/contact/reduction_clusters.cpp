@@ -90,9 +90,16 @@ bool flip_sunk_members(std::vector<Raw> &raw, const std::vector<int> &members, d
 }
 
 // Step 2: the deepest unassigned member of the region seeds a class of every unassigned member
-// within the split angle of its normal; appends the seeds and marks the classes alive.
+// within the split angle of its normal; appends the seeds and marks the classes alive. With a
+// distinct-spot distance, a member farther than it from the seed whose normal is more than
+// kDistinctSpotAngle off is another contact: a non-convex pair touching in two spots (a jack's
+// arm on two faces of another) keeps one contact each, whichever spot is deeper. In one class
+// the smooth maximum would hold the deeper spot's energy alone, and the contact's point would
+// jump between the spots when their overlaps cross.
 void split_normal_classes(const std::vector<Raw> &raw, const std::vector<int> &group,
-                          double cos_split, ReductionWorkspace &work) {
+                          double cos_split, double distinct_distance, ReductionWorkspace &work) {
+  static const double cos_distinct = std::cos(kDistinctSpotAngle);
+  const double distinct2 = distinct_distance * distinct_distance;
   std::vector<int> &cls = work.cls;
   for (int seed : group) {
     if (cls[seed] >= 0)
@@ -100,9 +107,18 @@ void split_normal_classes(const std::vector<Raw> &raw, const std::vector<int> &g
     const int c = static_cast<int>(work.seeds.size());
     work.seeds.push_back(seed);
     work.alive.push_back(1);
-    for (int i : group)
-      if (cls[i] < 0 && raw[i].normal.dot(raw[seed].normal) >= cos_split)
-        cls[i] = c;
+    const Raw &s = raw[seed];
+    for (int i : group) {
+      if (cls[i] >= 0)
+        continue;
+      const double cos_angle = raw[i].normal.dot(s.normal);
+      if (cos_angle < cos_split)
+        continue;
+      if (distinct2 > 0.0 && cos_angle < cos_distinct &&
+          (raw[i].point - s.point).squaredNorm() > distinct2)
+        continue;
+      cls[i] = c;
+    }
   }
 }
 
@@ -190,7 +206,7 @@ void reduce_region(std::vector<Raw> &raw, int begin, int end, double layer,
       return i < j;
     });
   const int first_class = static_cast<int>(work.seeds.size());
-  split_normal_classes(raw, group, work.cos_split, work);
+  split_normal_classes(raw, group, work.cos_split, params.distinct_spot_distance, work);
   absorb_rims(raw, group, first_class, layer, work);
   for (int c = first_class; c < static_cast<int>(work.seeds.size()); ++c) {
     if (!work.alive[c])

@@ -88,6 +88,7 @@ struct Body {
   // (contact/ball_contact.h), and their search reaches epsilon + ball_lift.
   const SurfaceSphere *spheres = nullptr;
   double ball_lift = 0.0; // m, Shape::ball_lift
+  bool convex = true;     // Shape::convex (a wall: unused)
   BodyState state;                        // mass <= 0 for a wall
   RigidPose pose; // a particle: x, orientation and bounding radius of `triangles`; unused for a wall
   // A particle: its body-frame triangles (those `pose` places; pose.frame points at them), so
