@@ -62,7 +62,7 @@ constexpr double kFlatPatchBand = 0.1;
 // 2 mm icosphere); two flat faces meshed by any triangles by rounding only.
 constexpr double kFlatGradientSpread = 0.01;
 // Step 2: normals this far apart (30 degrees), at points farther apart than
-// ReductionParams::distinct_spot_distance, are two contacts of a non-convex pair.
+// ReductionParams::distinct_spot_distance, are two contacts of a non-convex pair or a crease.
 constexpr double kDistinctSpotAngle = 0.5235987755982988;
 
 enum class ReductionMethod {
@@ -77,7 +77,7 @@ struct ReductionParams {
   double split_angle = 0.7853981633974483; // rad (45 deg), clusters: normal-class half-angle
   // m, clusters: > 0 keeps a member out of the seed's class when it lies farther than this
   // from the seed and its normal is more than kDistinctSpotAngle off (step 2: two spots of a
-  // non-convex pair); 0: the angle alone decides.
+  // non-convex pair, or of a particle in a wall's crease); 0: the angle alone decides.
   double distinct_spot_distance = 0.0;
   double min_width = 0.0; // m, paper_min_width: the minimum mesh width of the two meshes
   // Unit, from a towards b; used only where a normal is otherwise undefined (see above).

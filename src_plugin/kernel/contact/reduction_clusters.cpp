@@ -93,7 +93,8 @@ bool flip_sunk_members(std::vector<Raw> &raw, const std::vector<int> &members, d
 // within the split angle of its normal; appends the seeds and marks the classes alive. With a
 // distinct-spot distance, a member farther than it from the seed whose normal is more than
 // kDistinctSpotAngle off is another contact: a non-convex pair touching in two spots (a jack's
-// arm on two faces of another) keeps one contact each, whichever spot is deeper. In one class
+// arm on two faces of another) or a particle in a wall's crease keeps one contact each,
+// whichever spot is deeper. In one class
 // the smooth maximum would hold the deeper spot's energy alone, and the contact's point would
 // jump between the spots when their overlaps cross.
 void split_normal_classes(const std::vector<Raw> &raw, const std::vector<int> &group,

@@ -297,9 +297,10 @@ ReductionParams reduction_params(const Body &a, const Body &b, const Interaction
   params.reference_direction = reference_direction(a, b);
   params.distance_tolerance = certified_tolerance(s.distance, a.epsilon, b.epsilon);
   params.classify = classify;
-  // Two particles of which one is not convex may touch in several spots (contact_reduction.h,
-  // step 2); convex pairs and walls keep one class per normal cone.
-  if (!a.is_wall() && !b.is_wall() && !(a.convex && b.convex))
+  // Two particles of which one is not convex, or a particle and a wall (a crease of its
+  // facets), may touch in several spots (contact_reduction.h, step 2); two convex particles
+  // touch in one.
+  if (a.is_wall() || b.is_wall() || !(a.convex && b.convex))
     params.distinct_spot_distance = a.epsilon + b.epsilon;
   // Smooth surfaces against facets (a wall, a cube's face, a rock): measured on the smooth
   // one. Between two smooth surfaces the peak measured along each facet pair's bisector did not
