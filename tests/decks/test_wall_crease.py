@@ -6,22 +6,11 @@ deeper edge's overlap alone, and the groove carried the prism with half its stif
 import math
 import os
 
-from decklib import EPS, check, last_frame, run_deck
+from decklib import EPS, check, last_frame, run_deck, write_stl
 
 MAT = {"kn": 2000.0, "kt": 1000.0, "gamman": 0.0, "gammat": 0.0, "mu": 0.5}
 FLANK = math.radians(20.0)
 HALF = 1e-3  # m, half the distance between the prism's bottom edges
-
-
-def _write(path, triangles, name):
-    with open(path, "w") as out:
-        out.write(f"solid {name}\n")
-        for tri in triangles:
-            out.write(" facet normal 0 0 0\n  outer loop\n")
-            for p in tri:
-                out.write("   vertex %.17g %.17g %.17g\n" % p)
-            out.write("  endloop\n endfacet\n")
-        out.write(f"endsolid {name}\n")
 
 
 def _meshes(work):
@@ -34,15 +23,15 @@ def _meshes(work):
     for i in range(3):
         j = (i + 1) % 3
         tris += [(lo[i], lo[j], hi[j]), (lo[i], hi[j], hi[i])]
-    _write(os.path.join(work, "prism.stl"), [tri[::-1] for tri in tris], "prism")
+    write_stl(os.path.join(work, "prism.stl"), [tri[::-1] for tri in tris])
     # The groove: two flanks rising at FLANK from the crease along y, 8 mm each way.
     w, s = 0.008, 0.006
     zt = w * math.tan(FLANK)
     left = [(-w, -s, zt), (0.0, -s, 0.0), (0.0, s, 0.0), (-w, s, zt)]
     right = [(0.0, -s, 0.0), (w, -s, zt), (w, s, zt), (0.0, s, 0.0)]
     quads = [left, right]
-    _write(os.path.join(work, "groove.stl"),
-           [tri for q in quads for tri in ((q[0], q[1], q[2]), (q[0], q[2], q[3]))], "groove")
+    write_stl(os.path.join(work, "groove.stl"),
+              [tri for q in quads for tri in ((q[0], q[1], q[2]), (q[0], q[2], q[3]))])
 
 
 def test_prism_in_a_groove(ctx):

@@ -94,9 +94,9 @@ bool flip_sunk_members(std::vector<Raw> &raw, const std::vector<int> &members, d
 // distinct-spot distance, a member farther than it from the seed whose normal is more than
 // kDistinctSpotAngle off is another contact: a non-convex pair touching in two spots (a jack's
 // arm on two faces of another) or a particle in a wall's crease keeps one contact each,
-// whichever spot is deeper. In one class
-// the smooth maximum would hold the deeper spot's energy alone, and the contact's point would
-// jump between the spots when their overlaps cross.
+// whichever spot is deeper. In one class the smooth maximum would hold the deeper spot's
+// energy alone, and the contact's point would jump between the spots when their overlaps
+// cross.
 void split_normal_classes(const std::vector<Raw> &raw, const std::vector<int> &group,
                           double cos_split, double distinct_distance, ReductionWorkspace &work) {
   static const double cos_distinct = std::cos(kDistinctSpotAngle);
