@@ -41,6 +41,7 @@ WORK/results_LABEL.json; --plot draws the PNG of one or more labels (Debian's ma
 Standard library only otherwise.
 """
 import argparse
+import itertools
 import json
 import os
 import platform
@@ -231,7 +232,7 @@ class Bench:
                         self.restarts(kind, n, ntri)
                 for phase in a.phases:
                     for threads, ranks in configs:
-                        for rep, skin in ((r, k) for r in range(a.repeat) for k in a.skins):
+                        for rep, skin in itertools.product(range(a.repeat), a.skins):
                             s = (self.measure("spheres", n, ntri, phase, 1, ranks, rep, skin)
                                  if threads == 1 else None)
                             r = self.measure("rocks", n, ntri, phase, threads, ranks, rep, skin)
