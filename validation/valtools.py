@@ -15,6 +15,19 @@ REPO = os.path.abspath(os.path.join(os.path.dirname(os.path.abspath(__file__)), 
 # Open MPI refuses to run as root without these (the containers run as root).
 MPI_ENV = {"OMPI_ALLOW_RUN_AS_ROOT": "1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM": "1"}
 
+# Benchmarks against spheres: the phases whose time per step does not drift as they run. Only
+# there may the (cheap) sphere side run more steps than the rocks; a phase that changes as it
+# runs (a pile forming, a hopper discharging, a gas cooling) is timed over the same steps on
+# both sides, the same simulated window.
+STEADY_PHASES = {"free", "settled"}
+
+
+def cpu_measurable(run):
+    """Whether a measured run's CPU time (its cpu_ms_per_step over its steps) is well above
+    the spread of the start-up subtracted from it (50 ms); below, a CPU figure means nothing."""
+    steps = run.get("total_steps", run["steps"])
+    return run["cpu_ms_per_step"] * (steps - 1) >= 50.0
+
 
 def default_exe():
     """The liggghts-tri to run: $LIGGGHTS_TRI, else build/src_plugin/driver/liggghts-tri in the repo."""

@@ -61,7 +61,6 @@ sys.path.insert(0, os.path.join(HERE, "..", ".."))
 import valtools  # noqa: E402
 LATTICE_N, LATTICE_S = 8, 0.0045      # in.column's lattice: n^3 rocks, 4.5 mm apart
 RHO = 2500.0
-CPU_MIN_MS = 50.0  # a measured run's CPU time below this is start-up noise: no CPU figure
 COUNTERS = ["pairs_checked", "pairs_in_contact", "triangle_pairs_tested", "triangle_contacts"]
 DECK_KEYS = ["k_checked", "k_incontact", "k_tested", "k_tricontacts"]
 # --cubes: validation/bulk's Platonic study (run_bulk.py, multisphere.py)
@@ -295,10 +294,7 @@ class Column(Bench):
     def measure(self, kind, mat, phase, skin, rep):
         a = self.a
         out = os.path.join(a.work, "runs", f"{a.label}_{kind}_{mat}_{phase}_skin{skin}_{rep}{self.suffix}")
-        # The gas cools (restitution 0.5): its collision rate falls from run to run, so both
-        # sides time the same simulated window, the same steps; the settled bed and free flight
-        # are steady, and the spheres run longer there for a measurable time.
-        factor = a.sphere_factor if kind == "spheres" and phase != "gas" else 1
+        factor = a.sphere_factor if kind == "spheres" and phase in valtools.STEADY_PHASES else 1
         steps = {"settled": a.steps, "free": a.free_steps, "gas": a.gas_steps}[phase] * factor
 
         def cmd_of(n):
@@ -381,10 +377,8 @@ def column_summary(results):
             e["ratio"] = e["rocks"] / e["spheres"]
             e["ratio_median"] = median([p["rocks"]["ms_per_step"] / p["spheres"]["ms_per_step"] for p in pairs])
             e["cpu_ratio"] = e["rocks_cpu"] / max(e["spheres_cpu"], 1e-9)
-            # A run of a few ms of CPU (the spheres' gas) is within the start-up's own spread:
-            # its CPU time per step means nothing.
-            e["cpu_short"] = any(p[k]["cpu_ms_per_step"] * (p[k].get("total_steps", p[k]["steps"]) - 1)
-                                 < CPU_MIN_MS for p in pairs for k in ("spheres", "rocks"))
+            e["cpu_short"] = not all(valtools.cpu_measurable(p[k]) for p in pairs
+                                     for k in ("spheres", "rocks"))
             rows[skin] = e
         bs = min(rows, key=lambda s: rows[s]["spheres"])
         br = min(rows, key=lambda s: rows[s]["rocks"])

@@ -59,7 +59,6 @@ DT = 2e-5
 T_FORM, T_SETTLE = 0.06, 0.3  # the pile: forming, settled
 T_HOPPER = 0.2  # the hopper: the pile has formed in the funnel (the measurement)
 T_GAS = 0.03  # the gas: its warm-up, long after the first collisions of the lattice
-STEADY_PHASES = {"free", "settled"}  # the phases whose time per step does not drift as they run
 SKINS = [0.2, 0.4, 0.7, 1.0, 1.5]  # mm: each side is measured at each, and compared at its best
 HOPPER = os.path.join(REPO, "examples", "hopper")
 COUNTERS = ["pairs_checked", "pairs_in_contact", "triangle_pairs_tested", "contacts_before",
@@ -198,11 +197,8 @@ class Bench:
                                                         restart, 1, phase, skin), setup_dir,
                                            threads, a.run_timeout)["cpu"]
         steps = a.free_steps if phase == "free" else a.steps
-        if kind == "spheres" and phase in STEADY_PHASES:
-            # cheap: more steps, so that their CPU time is well above the noise; a phase that
-            # changes as it runs (a pile forming, a hopper discharging, a gas cooling) is timed
-            # over the same steps on both sides, the same simulated window
-            steps *= a.sphere_factor
+        if kind == "spheres" and phase in valtools.STEADY_PHASES:
+            steps *= a.sphere_factor  # cheap: more steps, for a CPU time well above the noise
         cmd = self.command(kind, n, ntri, mode, ranks, out, restart, steps, phase, skin)
         before = loadavg()
         r = self.run(cmd, out, threads, a.run_timeout)
@@ -295,7 +291,8 @@ def summarise(results):
             if sphere:
                 e["spheres"].append(sphere["ms_per_step"])
                 e["ratios"].append(rock["ms_per_step"] / sphere["ms_per_step"])
-                if "cpu_ms_per_step" in rock and "cpu_ms_per_step" in sphere:
+                if ("cpu_ms_per_step" in rock and "cpu_ms_per_step" in sphere and
+                        valtools.cpu_measurable(rock) and valtools.cpu_measurable(sphere)):
                     e["spheres_cpu"].append(sphere["cpu_ms_per_step"])
                     e["cpu_ratios"].append(rock["cpu_ms_per_step"] /
                                            max(sphere["cpu_ms_per_step"], 1e-9))
