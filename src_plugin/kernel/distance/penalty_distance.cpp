@@ -50,7 +50,10 @@ TRI_LANE void penalty_lane(const double (*c)[kPairLanes], int l, double weight, 
     z0 = start[0][l], z1 = start[1][l], z2 = start[2][l], z3 = start[3][l];
   }
   // The first iteration whose step was within tolerance, carried as a double: an int select
-  // on a double comparison mixes mask widths, which g++ 12 does not vectorise.
+  // on a double comparison mixes mask widths, which g++ 12 does not vectorise. Without a select
+  // at all: g++ 12 stops with an internal error on this loop's selects for plain x86-64 (no
+  // SSE4.1 blend). -copysign(inf, tol2 - step2) is -inf where step2 <= tol2, else +inf (a
+  // NaN step: either, by its sign; converged_at is a statistic only).
   double first_converged = INFINITY;
 #pragma GCC unroll 32
   for (int it = 1; it <= Iterations; ++it) {
@@ -87,7 +90,8 @@ TRI_LANE void penalty_lane(const double (*c)[kPairLanes], int l, double weight, 
     const double x0 = y0 * inv0 - l10 * x1 - l20 * x2 - l30 * x3;
     z0 += x0, z1 += x1, z2 += x2, z3 += x3;
     const double step2 = x0 * x0 + x1 * x1 + x2 * x2 + x3 * x3;
-    first_converged = std::min(first_converged, step2 <= tol2 ? double(it) : INFINITY);
+    first_converged =
+        std::min(first_converged, std::max(-std::copysign(INFINITY, tol2 - step2), double(it)));
   }
 
   out.z[0][l] = z0, out.z[1][l] = z1, out.z[2][l] = z2, out.z[3][l] = z3;
