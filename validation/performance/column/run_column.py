@@ -33,6 +33,7 @@ second, each at every skin and then at its best.
 
   /usr/bin/python3 validation/performance/column/run_column.py [--repeat 3] [--mat stiffness hooke]
       [--phases settled free gas] [--skins 0.2 0.4 0.7 1.0 1.5] [--steps 100] [--chunks 5]
+      [--n 8] [--nz N]   (n^2 nz rocks: a column n x 4.5 mm wide and nz layers deep)
       [--tri build/src_plugin/driver/liggghts-tri] [--liggghts /usr/bin/liggghts] [--work /tmp/column_bench]
       [--label NAME] [--prepare]
   /usr/bin/python3 validation/performance/column/run_column.py --cubes [--n-cubes 500] [--repeat 3]
@@ -231,8 +232,10 @@ class Column(Bench):
     def __init__(self, a):
         super().__init__(a, "column")
         self.cols = valtools.stats_columns(a.stats_tool, COUNTERS)
-        # --n other than the lattice's 8: n^3 rocks in a column n x 4.5 mm wide, on its own floor
-        self.suffix = "" if a.n == LATTICE_N else f"_n{a.n}"
+        # --n other than the lattice's 8: n^2 nz rocks in a column n x 4.5 mm wide, on its own
+        # floor (nz: --nz, by default n)
+        a.nz = a.nz or a.n
+        self.suffix = ("" if a.n == LATTICE_N else f"_n{a.n}") + ("" if a.nz == a.n else f"x{a.nz}")
         self.floor = os.path.join(a.work, f"floor{self.suffix}.stl")
         write_floor(self.floor, a.n * LATTICE_S / 2)
         self.prepared = set()
@@ -240,7 +243,7 @@ class Column(Bench):
 
     def var(self, kind, mat, mode, out, skin, steps=None, restart=None, g=None):
         v = {"floor": self.floor, "mat": mat, "mode": mode, "out": out, "skin": skin * 1e-3,
-             "n": self.a.n}
+             "n": self.a.n, "nz": self.a.nz}
         if steps:
             v["steps"] = steps
             v["chunks"] = self.a.chunks if steps > 1 else 1
@@ -283,7 +286,7 @@ class Column(Bench):
         if self.d is None:
             out = os.path.join(self.a.work, "mass")
             v = {"floor": self.floor, "mat": mat, "mode": "free", "out": out, "steps": 1, "skin": 0.001,
-                 "n": self.a.n}
+                 "n": self.a.n, "nz": self.a.nz}
             r = run(self.command("rocks", v), out, 600)
             m = r["out_mass"] / r["out_atoms"]
             self.d = (6.0 * m / (math.pi * RHO)) ** (1.0 / 3.0)
@@ -308,7 +311,7 @@ class Column(Bench):
             return cmd if n else (cmd, steps)
 
         r = self.timed((kind, mat, phase, skin), cmd_of, out, a.run_timeout)
-        r.update(kind=kind, mat=mat, phase=phase, skin=skin, rep=rep, n=a.n)
+        r.update(kind=kind, mat=mat, phase=phase, skin=skin, rep=rep, n=a.n, nz=a.nz)
         if kind == "rocks":
             rows = [l.split() for l in open(os.path.join(out, "counters.txt"))
                     if l.strip() and not l.startswith("#")]
@@ -356,7 +359,8 @@ def column_summary(results):
     runs = {}
     for r in results:
         n = r.get("n", LATTICE_N)
-        mat = r["mat"] if n == LATTICE_N else f"{r['mat']}, {n ** 3} rocks"
+        nz = r.get("nz", n)
+        mat = r["mat"] if n == LATTICE_N and nz == n else f"{r['mat']}, {n * n * nz} rocks"
         runs.setdefault((mat, r["phase"]), {}).setdefault(r["skin"], {}).setdefault(
             (r["label"], r["rep"]), {})[r["kind"]] = r
     out = {}
@@ -632,6 +636,7 @@ def main():
     ap.add_argument("--skins", nargs="+", type=float, default=[0.2, 0.4, 0.7, 1.0, 1.5])
     ap.add_argument("--n", type=int, default=LATTICE_N,
                     help="n^3 rocks (and spheres) on an n x n x n lattice, the column n x 4.5 mm wide")
+    ap.add_argument("--nz", type=int, help="lattice layers (default n): n^2 nz rocks, a bed nz deep")
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--steps", type=int, default=100, help="rocks' steps per chunk in the settled phase")
     ap.add_argument("--free-steps", type=int, default=1000)
