@@ -435,6 +435,38 @@ void FixTriParticles::ensure_world_triangles_of(int i) {
   once_this_evaluation(&world_stamp_[i], [&] { transform_atom(i); });
 }
 
+void FixTriParticles::prepare_task_bodies(int threads) {
+  prepare_bodies();
+  if (static_cast<int>(task_caches_.size()) < threads)
+    task_caches_.resize(static_cast<std::size_t>(threads));
+}
+
+long long FixTriParticles::reserve_pins(long long groups) {
+  const long long first = next_pin_;
+  next_pin_ += groups;
+  return first;
+}
+
+const tri::Body &FixTriParticles::task_body(int i, int thread, long long pin) {
+  ensure_body_of(i);
+  const int s = shape_index(i);
+  tri_liggghts::WorldCache &cache = task_caches_[static_cast<std::size_t>(thread)];
+  const tri_liggghts::WorldCache::Found found = s < 0 ? tri_liggghts::WorldCache::Found{}
+                                                      : cache.find(i, evaluation_, pin);
+  if (found.slot < 0) {
+    ensure_world_triangles_of(i);
+    return bodies_[i];
+  }
+  tri::Body &b = cache.body(found.slot);
+  if (found.fill) {
+    b = bodies_[i];
+    tri::transform_soa(shapes_[s].soa, b.pose.q.toRotationMatrix(), b.pose.x,
+                       cache.triangles(found.slot));
+    b.triangles = &cache.triangles(found.slot);
+  }
+  return b;
+}
+
 void FixTriParticles::update_world_triangles(int n) {
   prepare_bodies();
   for (int i = 0; i < n; ++i)
@@ -618,6 +650,8 @@ double FixTriParticles::memory_usage() {
   double bytes = static_cast<double>(atom->nmax) * (kValues + kPending) * sizeof(double);
   for (const tri::TriangleSoA &w : world_)
     bytes += 3.0 * w.x.capacity() * sizeof(double) + sizeof(w);
+  for (const tri_liggghts::WorldCache &c : task_caches_)
+    bytes += static_cast<double>(c.bytes());
   bytes += static_cast<double>(bodies_.capacity() * sizeof(tri::Body) +
                                (world_stamp_.capacity() + body_stamp_.capacity()) *
                                    sizeof(long long));

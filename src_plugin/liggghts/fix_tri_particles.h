@@ -31,6 +31,7 @@
 #include "interaction/body_interaction.h"
 #include "material_scales.h"
 #include "run_safety_monitor.h"
+#include "world_cache.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -183,11 +184,22 @@ public:
   // loop (output):
   void update_world_triangles(int n);
   // For one atom, from inside a contact style's parallel loop: the first
-  // task (on any thread) that needs atom i transforms it and the others wait for it. Computed
-  // just before they are read, the triangles are in that core's cache when the kernel gathers
-  // them; computed for every atom first, a pile's 3 MB of them had left the cache by then.
-  // Builds the Body record too, if no task has yet.
+  // task (on any thread) that needs atom i transforms it and the others wait for it. Builds the
+  // Body record too, if no task has yet. The contact styles take task_body instead, and this
+  // only where its cache has no room.
   void ensure_world_triangles_of(int i);
+  // For a contact style's task on thread `thread`: atom i's Body record with its world-frame
+  // triangles, from the thread's WorldCache (world_cache.h), pinned for `pin` (the task's group
+  // of tasks: reserve_pins), or the atom's own record and triangles where the cache has no
+  // room. Valid while that group's tasks run. The caller sizes the caches first, outside its
+  // parallel loop (prepare_task_bodies), and reserves one pin per group. Computed just before
+  // they are read, in a table a thread reuses from task to task, the triangles are in that
+  // core's cache when the kernel gathers them: computed for every atom first, a pile's 3 MB
+  // had left the cache by then; kept per atom, a bed of 8192 rocks' 24 MB left the L3 between
+  // one step and the next. Either way the same bits.
+  const tri::Body &task_body(int i, int thread, long long pin);
+  void prepare_task_bodies(int threads);
+  long long reserve_pins(long long groups); // the first of `groups` pins no group has had
   // Insertion (particle_insertion.h): the rules a template's shape follows, and atom i, just
   // inserted by a template with a shape (no tag yet), is given that shape.
   bool assigns_by_type() const { return assign_by_type_; }
@@ -205,6 +217,8 @@ private:
   std::vector<long long> world_stamp_;
   std::vector<long long> body_stamp_;  // per atom: the same for its Body record (ensure_body_of)
   long long evaluation_ = 1;           // force evaluations so far + 1 (pre_force)
+  std::vector<tri_liggghts::WorldCache> task_caches_; // one per thread (task_body)
+  long long next_pin_ = 0;
   void build_body(int i);              // bodies_[i] without its triangles
   void transform_atom(int i);          // bodies_[i] (if not built yet) and world_[i]
   // Runs `work` once this force evaluation for the atom whose stamp is `stamp`, whichever

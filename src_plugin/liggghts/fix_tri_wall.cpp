@@ -242,6 +242,7 @@ void FixTriWall::build_wall(int k, std::vector<Eigen::Vector3d> &nodes,
 void FixTriWall::prepare(int k, bool update_history, NodeScratch &scratch) {
   build_wall(k, scratch.nodes, scratch.velocities);
   Task &task = tasks_[k];
+  task.body = nullptr;
   particles_->ensure_body_of(task.atom);
   task.apart = tri::proven_apart(particles_->body(task.atom), task.wall, settings_.interaction,
                                  separation_cache(task, update_history));
@@ -257,7 +258,7 @@ template <class Step> auto FixTriWall::in_kernel_view(int k, bool update_history
                        ? nullptr
                        : history_[a] + task.mesh * tri::kHistoryDoubles;
   tri::HistoryView history(stored, false, update_history);
-  return step(particles_->body(a), task.wall, s, history.data());
+  return step(task.body ? *task.body : particles_->body(a), task.wall, s, history.data());
 }
 
 tri::PairPlan FixTriWall::EngineHost::plan(std::size_t k, int thread,
@@ -271,7 +272,8 @@ tri::PairPlan FixTriWall::EngineHost::plan(std::size_t k, int thread,
       tri::apart_needs_nothing(fix.history_[task.atom] + task.mesh * tri::kHistoryDoubles))
     return tri::apart_result(stats);
   if (!task.apart) // prepare asked proven_apart from the particle's pose
-    fix.particles_->ensure_world_triangles_of(task.atom);
+    fix.tasks_[k].body = &fix.particles_->task_body(
+        task.atom, thread, fix.first_pin_ + static_cast<long long>(k) / fix.group_tasks_);
   return fix.in_kernel_view(
       static_cast<int>(k), update_history,
       [&](const tri::Body &particle, const tri::Body &wall, const tri::InteractionSettings &s,
@@ -320,7 +322,9 @@ void FixTriWall::compute(bool update_history, int vflag) {
   const int nthreads = tri_liggghts::pair_loop_threads(settings_.loop, ntasks_);
   if (static_cast<int>(node_scratch_.size()) < nthreads)
     node_scratch_.resize(nthreads);
-  particles_->prepare_bodies();
+  particles_->prepare_task_bodies(nthreads);
+  group_tasks_ = tri::InteractionEngine::tasks_per_group(static_cast<long>(ntasks_), nthreads);
+  first_pin_ = particles_->reserve_pins(static_cast<long long>(ntasks_) / group_tasks_ + 1);
   const double dt = update->dt;
   tri_liggghts::ContactBoard &board = particles_->board();
   const bool loads = update_history && std::find(loaded_.begin(), loaded_.end(), 1) != loaded_.end();

@@ -72,7 +72,11 @@ private:
     tri::CandidateCache *candidates = nullptr; // kept candidates of (atom, mesh), or null
     tri::Body wall;     // the patch (patches_[k]) as the kernel sees it (prepare)
     bool apart = false; // proven apart by its kept gap or axis (prepare)
+    // Not apart: the particle with its world-frame triangles (FixTriParticles::task_body).
+    const tri::Body *body = nullptr;
   };
+  long long first_pin_ = 0; // the pin of the engine's group 0 this step (task_body)
+  long group_tasks_ = 1;    // tasks per engine group this step
   std::vector<class FixMeshSurface *> meshes_;
   std::vector<std::string> mesh_ids_;
   std::vector<char> loaded_; // per mesh: tracks its stress (wall loads wanted); from init

@@ -162,7 +162,9 @@ auto PairTriGran::in_kernel_view(const Task &task, bool update_history, Step &&s
     // Stored as seen from (i, j); the kernel sees it from (a, b), and the view writes the
     // values back when it goes out of scope.
     tri::HistoryView history(task.history, task.swapped, update_history);
-    return step(particles_->body(v.a), particles_->body(v.b), s, history.data(), cache);
+    const tri::Body *i = task.body_i ? task.body_i : &particles_->body(task.i);
+    const tri::Body *j = task.body_j ? task.body_j : &particles_->body(task.j);
+    return step(task.swapped ? *j : *i, task.swapped ? *i : *j, s, history.data(), cache);
   }();
   if (task.axis && update_history)
     for (int d = 0; d < 3; ++d)
@@ -180,7 +182,8 @@ void PairTriGran::prepare(Task &task, bool update_history) {
                                  settings_.interaction, cache);
 }
 
-tri::PairPlan PairTriGran::EngineHost::plan(std::size_t k, int, tri::InteractionScratch &scratch,
+tri::PairPlan PairTriGran::EngineHost::plan(std::size_t k, int thread,
+                                            tri::InteractionScratch &scratch,
                                             tri::ContactStats &stats) {
   Task &task = style.tasks_[k];
   style.prepare(task, update_history);
@@ -188,9 +191,10 @@ tri::PairPlan PairTriGran::EngineHost::plan(std::size_t k, int, tri::Interaction
     style.prefetch(style.tasks_[k + kPrefetchAhead]);
   if (task.apart && tri::apart_needs_nothing(task.history))
     return tri::apart_result(stats); // the axis stays as it is: its view would write it back
-  if (!task.apart) { // world-frame triangles as they are needed (cache)
-    style.particles_->ensure_world_triangles_of(task.i);
-    style.particles_->ensure_world_triangles_of(task.j);
+  if (!task.apart) { // world-frame triangles as they are needed (a thread's recent ones)
+    const long long pin = style.first_pin_ + static_cast<long long>(k) / style.group_tasks_;
+    task.body_i = &style.particles_->task_body(task.i, thread, pin);
+    task.body_j = &style.particles_->task_body(task.j, thread, pin);
   }
   return style.in_kernel_view(
       task, update_history,
@@ -273,7 +277,9 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
 
   task_geometry_.resize(tasks_.size());
   const int nthreads = tri_liggghts::pair_loop_threads(settings_.loop, tasks_.size());
-  particles_->prepare_bodies();
+  particles_->prepare_task_bodies(nthreads);
+  group_tasks_ = tri::InteractionEngine::tasks_per_group(static_cast<long>(tasks_.size()), nthreads);
+  first_pin_ = particles_->reserve_pins(static_cast<long long>(tasks_.size()) / group_tasks_ + 1);
   tri_liggghts::ContactBoard &board = particles_->board();
   engine_.record_contacts(virial_wanted || board.contacts_wanted());
   EngineHost host{*this, dt, update_history, newton, nlocal};

@@ -78,6 +78,8 @@ private:
     int *touching;   // LIGGGHTS keeps (migrates, restarts) the history only where this is set
     tri::CandidateCache *candidates; // the pair's kept candidates, or null
     bool apart = false; // proven apart by its kept gap or axis, from the poses (prepare)
+    // Not apart: its atoms with their world-frame triangles (FixTriParticles::task_body).
+    const tri::Body *body_i = nullptr, *body_j = nullptr;
   };
   static constexpr std::size_t kPrefetchAhead = 2;
   void prefetch(const Task &t);
@@ -115,6 +117,8 @@ private:
   tri_liggghts::ContactSettings settings_;
   tri_liggghts::MaterialTable materials_;
   std::vector<Task> tasks_;
+  long long first_pin_ = 0; // the pin of the engine's group 0 this step (task_body)
+  long group_tasks_ = 1;    // tasks per engine group this step
   std::vector<tri_liggghts::PairGeometry> task_geometry_; // per task, for the run-safety check
   tri::InteractionEngine engine_;
   tri_liggghts::CandidateStore candidates_;
