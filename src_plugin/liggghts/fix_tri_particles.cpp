@@ -1,5 +1,7 @@
 #include "fix_tri_particles.h"
 
+#include "interaction/interaction_engine.h"
+
 #include "incompatible_styles.h"
 #include "particle_insertion.h"
 #include "particle_options.h"
@@ -441,10 +443,12 @@ void FixTriParticles::prepare_task_bodies(int threads) {
     task_caches_.resize(static_cast<std::size_t>(threads));
 }
 
-long long FixTriParticles::reserve_pins(long long groups) {
-  const long long first = next_pin_;
-  next_pin_ += groups;
-  return first;
+tri_liggghts::TaskPins FixTriParticles::reserve_pins(std::size_t tasks, int threads) {
+  tri_liggghts::TaskPins pins;
+  pins.first = next_pin_;
+  pins.group_tasks = tri::InteractionEngine::tasks_per_group(static_cast<long>(tasks), threads);
+  next_pin_ += static_cast<long long>(tasks) / pins.group_tasks + 1;
+  return pins;
 }
 
 const tri::Body &FixTriParticles::task_body(int i, int thread, long long pin) {

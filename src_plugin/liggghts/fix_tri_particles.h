@@ -199,7 +199,8 @@ public:
   // one step and the next. Either way the same bits.
   const tri::Body &task_body(int i, int thread, long long pin);
   void prepare_task_bodies(int threads);
-  long long reserve_pins(long long groups); // the first of `groups` pins no group has had
+  // The pins of an engine run of `tasks` tasks on `threads` threads (world_cache.h).
+  tri_liggghts::TaskPins reserve_pins(std::size_t tasks, int threads);
   // Insertion (particle_insertion.h): the rules a template's shape follows, and atom i, just
   // inserted by a template with a shape (no tag yet), is given that shape.
   bool assigns_by_type() const { return assign_by_type_; }

@@ -272,8 +272,7 @@ tri::PairPlan FixTriWall::EngineHost::plan(std::size_t k, int thread,
       tri::apart_needs_nothing(fix.history_[task.atom] + task.mesh * tri::kHistoryDoubles))
     return tri::apart_result(stats);
   if (!task.apart) // prepare asked proven_apart from the particle's pose
-    fix.tasks_[k].body = &fix.particles_->task_body(
-        task.atom, thread, fix.first_pin_ + static_cast<long long>(k) / fix.group_tasks_);
+    fix.tasks_[k].body = &fix.particles_->task_body(task.atom, thread, fix.pins_.of(k));
   return fix.in_kernel_view(
       static_cast<int>(k), update_history,
       [&](const tri::Body &particle, const tri::Body &wall, const tri::InteractionSettings &s,
@@ -323,8 +322,7 @@ void FixTriWall::compute(bool update_history, int vflag) {
   if (static_cast<int>(node_scratch_.size()) < nthreads)
     node_scratch_.resize(nthreads);
   particles_->prepare_task_bodies(nthreads);
-  group_tasks_ = tri::InteractionEngine::tasks_per_group(static_cast<long>(ntasks_), nthreads);
-  first_pin_ = particles_->reserve_pins(static_cast<long long>(ntasks_) / group_tasks_ + 1);
+  pins_ = particles_->reserve_pins(ntasks_, nthreads);
   const double dt = update->dt;
   tri_liggghts::ContactBoard &board = particles_->board();
   const bool loads = update_history && std::find(loaded_.begin(), loaded_.end(), 1) != loaded_.end();

@@ -36,6 +36,7 @@
 #include "contact_settings.h"
 #include "interaction/interaction_engine.h"
 #include "material_table.h"
+#include "world_cache.h"
 
 #include <vector>
 
@@ -75,8 +76,7 @@ private:
     // Not apart: the particle with its world-frame triangles (FixTriParticles::task_body).
     const tri::Body *body = nullptr;
   };
-  long long first_pin_ = 0; // the pin of the engine's group 0 this step (task_body)
-  long group_tasks_ = 1;    // tasks per engine group this step
+  tri_liggghts::TaskPins pins_; // this step's (task_body)
   std::vector<class FixMeshSurface *> meshes_;
   std::vector<std::string> mesh_ids_;
   std::vector<char> loaded_; // per mesh: tracks its stress (wall loads wanted); from init

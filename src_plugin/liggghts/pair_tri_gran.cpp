@@ -192,9 +192,8 @@ tri::PairPlan PairTriGran::EngineHost::plan(std::size_t k, int thread,
   if (task.apart && tri::apart_needs_nothing(task.history))
     return tri::apart_result(stats); // the axis stays as it is: its view would write it back
   if (!task.apart) { // world-frame triangles as they are needed (a thread's recent ones)
-    const long long pin = style.first_pin_ + static_cast<long long>(k) / style.group_tasks_;
-    task.body_i = &style.particles_->task_body(task.i, thread, pin);
-    task.body_j = &style.particles_->task_body(task.j, thread, pin);
+    task.body_i = &style.particles_->task_body(task.i, thread, style.pins_.of(k));
+    task.body_j = &style.particles_->task_body(task.j, thread, style.pins_.of(k));
   }
   return style.in_kernel_view(
       task, update_history,
@@ -278,8 +277,7 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
   task_geometry_.resize(tasks_.size());
   const int nthreads = tri_liggghts::pair_loop_threads(settings_.loop, tasks_.size());
   particles_->prepare_task_bodies(nthreads);
-  group_tasks_ = tri::InteractionEngine::tasks_per_group(static_cast<long>(tasks_.size()), nthreads);
-  first_pin_ = particles_->reserve_pins(static_cast<long long>(tasks_.size()) / group_tasks_ + 1);
+  pins_ = particles_->reserve_pins(tasks_.size(), nthreads);
   tri_liggghts::ContactBoard &board = particles_->board();
   engine_.record_contacts(virial_wanted || board.contacts_wanted());
   EngineHost host{*this, dt, update_history, newton, nlocal};

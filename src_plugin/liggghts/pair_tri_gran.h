@@ -51,6 +51,7 @@
 #include "interaction/interaction_engine.h"
 #include "material_table.h"
 #include "particle_travel.h"
+#include "world_cache.h"
 
 #include <vector>
 
@@ -117,8 +118,7 @@ private:
   tri_liggghts::ContactSettings settings_;
   tri_liggghts::MaterialTable materials_;
   std::vector<Task> tasks_;
-  long long first_pin_ = 0; // the pin of the engine's group 0 this step (task_body)
-  long group_tasks_ = 1;    // tasks per engine group this step
+  tri_liggghts::TaskPins pins_; // this step's (task_body)
   std::vector<tri_liggghts::PairGeometry> task_geometry_; // per task, for the run-safety check
   tri::InteractionEngine engine_;
   tri_liggghts::CandidateStore candidates_;

@@ -57,4 +57,14 @@ private:
   std::vector<tri::TriangleSoA> world_;
 };
 
+// The pins of one engine run (interaction_engine.h): one per group of `group_tasks`
+// consecutive tasks, none of them any earlier run's (FixTriParticles::reserve_pins).
+struct TaskPins {
+  long long first = 0;
+  long group_tasks = 1;
+  long long of(std::size_t task) const {
+    return first + static_cast<long long>(task) / group_tasks;
+  }
+};
+
 } // namespace tri_liggghts
