@@ -380,8 +380,11 @@ void FixTriParticles::transform_atom(int i) {
   if (s < 0)
     return;
   ensure_body_of(i);
-  const tri::Body &b = bodies_[i];
-  tri::transform_soa(shapes_[s].soa, b.pose.q.toRotationMatrix(), b.pose.x, world_[i]);
+  place_triangles(s, bodies_[i], world_[i]);
+}
+
+void FixTriParticles::place_triangles(int s, const tri::Body &b, tri::TriangleSoA &out) const {
+  tri::transform_soa(shapes_[s].soa, b.pose.q.toRotationMatrix(), b.pose.x, out);
 }
 
 void FixTriParticles::size_world(std::size_t n) {
@@ -464,8 +467,7 @@ const tri::Body &FixTriParticles::task_body(int i, int thread, long long pin) {
   tri::Body &b = cache.body(found.slot);
   if (found.fill) {
     b = bodies_[i];
-    tri::transform_soa(shapes_[s].soa, b.pose.q.toRotationMatrix(), b.pose.x,
-                       cache.triangles(found.slot));
+    place_triangles(s, b, cache.triangles(found.slot));
     b.triangles = &cache.triangles(found.slot);
   }
   return b;

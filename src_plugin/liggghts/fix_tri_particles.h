@@ -222,6 +222,9 @@ private:
   long long next_pin_ = 0;
   void build_body(int i);              // bodies_[i] without its triangles
   void transform_atom(int i);          // bodies_[i] (if not built yet) and world_[i]
+  // Shape s's triangles placed by b's pose into `out`: the one transform of world_ and the
+  // task caches, so that both hold the same bits.
+  void place_triangles(int s, const tri::Body &b, tri::TriangleSoA &out) const;
   // Runs `work` once this force evaluation for the atom whose stamp is `stamp`, whichever
   // thread comes first; the others wait until it is done.
   template <class Work> void once_this_evaluation(long long *stamp, Work work);
