@@ -10,6 +10,7 @@
 #include "compute_tri_stats.h"
 #include "fix_tri_adapt_dt.h"
 #include "fix_tri_contact_history.h"
+#include "fix_tri_kept_contacts.h"
 #include "fix_tri_nve.h"
 #include "fix_tri_particles.h"
 #include "fix_tri_template_sphere.h"
@@ -67,6 +68,8 @@ const FixRow fix_table[] = {
     {"tri/nve", &make_fix<LAMMPS_NS::FixTriNVE>},
     {"tri/vtk", &make_fix<LAMMPS_NS::FixTriVTK>},
     {"tri/wall", &make_fix<LAMMPS_NS::FixTriWall>},
+    // pair tri/gran's kept contact points (fix_tri_kept_contacts.h), created by the pair
+    {"tri/kept_contacts", &make_fix<LAMMPS_NS::FixTriKeptContacts>},
     {"tri/adapt_dt", &make_fix<LAMMPS_NS::FixTriAdaptDt>},
     // Replaces LIGGGHTS's own: same behaviour for pair gran, and it also serves tri/gran.
     {"contacthistory", &make_fix<LAMMPS_NS::FixTriContactHistory>},

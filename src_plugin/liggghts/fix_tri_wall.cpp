@@ -67,6 +67,9 @@ FixTriWall::FixTriWall(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg) 
     } else if (!tri_liggghts::parse_contact_keyword(narg, arg, &i, settings_, kStyle, error)) {
       std::string msg = tri_liggghts::gran_submodel_message(kStyle, arg[i],
                                                             i + 1 < narg ? arg[i + 1] : nullptr);
+      if (msg.empty() && key == "keep_contacts")
+        msg = std::string(kStyle) + ": 'keep_contacts' is a keyword of pair tri/gran (particle "
+                                    "pairs); wall contacts are measured every step";
       if (msg.empty())
         msg = std::string(kStyle) + ": unknown keyword '" + key + "'";
       error->all(FLERR, msg.c_str());

@@ -6,6 +6,8 @@
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
+#include "domain.h"
+#include "fix_tri_kept_contacts.h"
 #include "force.h"
 #include "modify.h"
 #include "neigh_list.h"
@@ -13,6 +15,8 @@
 #include "update.h"
 
 #include <algorithm>
+#include <cstdlib>
+#include <string>
 
 using namespace LAMMPS_NS;
 
@@ -29,6 +33,10 @@ PairTriGran::PairTriGran(LAMMPS *lmp) : PairGran(lmp) {
 
 void PairTriGran::settings(int narg, char **arg) {
   for (int i = 0; i < narg;) {
+    if (std::string(arg[i]) == "keep_contacts") {
+      parse_keep_contacts(narg, arg, &i);
+      continue;
+    }
     if (!tri_liggghts::parse_contact_keyword(narg, arg, &i, settings_, kStyle, error)) {
       std::string msg =
           tri_liggghts::gran_submodel_message(kStyle, arg[i], i + 1 < narg ? arg[i + 1] : nullptr);
@@ -52,6 +60,21 @@ void PairTriGran::settings(int narg, char **arg) {
   }
 }
 
+// keep_contacts T|no: carry a pair's contact points while the bodies move less than T times
+// their layer relative to each other (kept_contacts.h); no: measure every contact every step.
+void PairTriGran::parse_keep_contacts(int narg, char **arg, int *i) {
+  if (*i + 1 >= narg)
+    error->all(FLERR, "Pair tri/gran: missing value after 'keep_contacts'");
+  const std::string v = arg[*i + 1];
+  char *end = nullptr;
+  const double t = v == "no" || v == "off" ? 0.0 : std::strtod(v.c_str(), &end);
+  if (end && (*end != '\0' || !(t > 0.0) || !(t <= 1e-2)))
+    error->all(FLERR, ("Pair tri/gran: 'keep_contacts' expects no or a tolerance in (0, 0.01] "
+                       "times the combined soft layer, got '" + v + "'").c_str());
+  settings_.interaction.kept_tolerance = t;
+  *i += 2;
+}
+
 void PairTriGran::init_style() {
   particles_ = static_cast<FixTriParticles *>(modify->find_fix_style("tri/particles", 0));
   if (!particles_)
@@ -66,6 +89,27 @@ void PairTriGran::init_style() {
   board.publish_material(board_slot_, materials_.hint(atom->ntypes, types));
   particles_->resolve_epsilon(); // before PairGran sizes the cutoffs from the radii
   PairGran::init_style();
+  find_kept_contacts();
+}
+
+// The fix that keeps the pairs' contact points between steps and moves them with the atoms
+// (fix_tri_kept_contacts.h): created once, like LIGGGHTS's fix contacthistory, under a fixed ID
+// so that a restart file's records find it again.
+void PairTriGran::find_kept_contacts() {
+  kept_ = nullptr;
+  if (!(settings_.interaction.kept_tolerance > 0.0))
+    return;
+  const char *id = "tri_kept_contacts";
+  int f = modify->find_fix(id);
+  if (f < 0) {
+    char *args[] = {const_cast<char *>(id), const_cast<char *>("all"),
+                    const_cast<char *>("tri/kept_contacts")};
+    modify->add_fix(3, args);
+    f = modify->find_fix(id);
+  }
+  if (f < 0 || std::string(modify->fix[f]->style) != "tri/kept_contacts")
+    error->all(FLERR, "Pair tri/gran: fix ID 'tri_kept_contacts' is taken by another fix");
+  kept_ = &static_cast<FixTriKeptContacts *>(modify->fix[f])->store();
 }
 
 void PairTriGran::collect_tasks() {
@@ -81,6 +125,8 @@ void PairTriGran::collect_tasks() {
   for (int ii = 0; ii < list->inum; ++ii)
     neighbour_pairs += static_cast<std::size_t>(list->numneigh[list->ilist[ii]]);
   candidates_.begin_step(neighbour_pairs);
+  if (kept_)
+    kept_->begin_step(neighbour_pairs);
   // The store's hint slots: a pair's place in the neighbour list, which stays the same until the
   // next rebuild (counting only the pairs within reach, every pair after one that came within
   // reach or left it named another's entry, and was looked up).
@@ -136,10 +182,24 @@ void PairTriGran::collect_tasks() {
                            tag[i], tag[j]});
         continue;
       }
-      tasks_.push_back({i, j, swapped, history, axis, values, touching, candidates});
+      double *kept = kept_ ? kept_->entry(slot, kept_key(i, j)) : nullptr;
+      tasks_.push_back({i, j, swapped, history, axis, values, touching, candidates, kept});
     }
   }
   candidates_.end_step();
+}
+
+// The store's key of the pair (i, j), i owned (kept_contact_store.h): j is a periodic image
+// where it lies outside the box along a periodic direction.
+std::uint64_t PairTriGran::kept_key(int i, int j) const {
+  const double *x = atom->x[j];
+  bool image = false;
+  for (int d = 0; d < 3; ++d)
+    image = image || (domain->periodicity[d] && (x[d] < domain->boxlo[d] || x[d] >= domain->boxhi[d]));
+  using Store = tri_liggghts::KeptContactStore;
+  const long long ti = atom->tag[i], tj = atom->tag[j];
+  const Store::Image which = !image ? Store::Image::none : ti < tj ? Store::Image::b : Store::Image::a;
+  return Store::key(std::min(ti, tj), std::max(ti, tj), which);
 }
 
 PairTriGran::TaskView PairTriGran::view(const Task &task) {
@@ -156,7 +216,7 @@ auto PairTriGran::in_kernel_view(const Task &task, bool update_history, Step &&s
   TaskView v = view(task);
   // prepare() has asked proven_apart.
   const tri::SeparationCache cache{task.axis ? v.axis : nullptr, update_history, task.candidates,
-                                   travel_.of(v.a, v.b)};
+                                   travel_.of(v.a, v.b), task.kept};
   const tri::InteractionSettings &s = materials_.settings(atom->type[v.a], atom->type[v.b]);
   auto out = [&] {
     // Stored as seen from (i, j); the kernel sees it from (a, b), and the view writes the
@@ -177,9 +237,18 @@ void PairTriGran::prepare(Task &task, bool update_history) {
   particles_->ensure_body_of(task.j);
   TaskView v = view(task);
   const tri::SeparationCache cache{task.axis ? v.axis : nullptr, update_history, task.candidates,
-                                   travel_.of(v.a, v.b)};
+                                   travel_.of(v.a, v.b), task.kept};
   task.apart = tri::proven_apart(particles_->body(v.a), particles_->body(v.b),
                                  settings_.interaction, cache);
+}
+
+bool PairTriGran::carries_kept_contacts(const Task &task) {
+  if (!tri::contacts_kept(task.kept))
+    return false;
+  const TaskView v = view(task);
+  const tri::SeparationCache cache{nullptr, false, nullptr, {}, task.kept};
+  return tri::kept_contacts_hold(particles_->body(v.a), particles_->body(v.b),
+                                 materials_.settings(atom->type[v.a], atom->type[v.b]), cache);
 }
 
 tri::PairPlan PairTriGran::EngineHost::plan(std::size_t k, int thread,
@@ -189,9 +258,11 @@ tri::PairPlan PairTriGran::EngineHost::plan(std::size_t k, int thread,
   style.prepare(task, update_history);
   if (k + kPrefetchAhead < style.tasks_.size())
     style.prefetch(style.tasks_[k + kPrefetchAhead]);
-  if (task.apart && tri::apart_needs_nothing(task.history))
+  if (task.apart && tri::apart_needs_nothing(task.history) && !tri::contacts_kept(task.kept))
     return tri::apart_result(stats); // the axis stays as it is: its view would write it back
-  if (!task.apart) { // world-frame triangles as they are needed (a thread's recent ones)
+  // World-frame triangles as they are needed (a thread's recent ones): not for a pair apart or
+  // one whose kept contact points are carried (both read the poses alone).
+  if (!task.apart && !style.carries_kept_contacts(task)) {
     task.body_i = &style.particles_->task_body(task.i, thread, style.pins_.of(k));
     task.body_j = &style.particles_->task_body(task.j, thread, style.pins_.of(k));
   }
@@ -199,8 +270,11 @@ tri::PairPlan PairTriGran::EngineHost::plan(std::size_t k, int thread,
       task, update_history,
       [&](const tri::Body &a, const tri::Body &b, const tri::InteractionSettings &s,
           double *history, const tri::SeparationCache &cache) -> tri::PairPlan {
-        if (task.apart)
+        if (task.apart) {
+          if (update_history && tri::contacts_kept(task.kept))
+            tri::clear_kept_contacts(task.kept);
           return tri::apart_result(a, b, s, dt, history, scratch, stats);
+        }
         return tri::plan_body_pair(a, b, s, dt, history, scratch, stats, cache);
       });
 }

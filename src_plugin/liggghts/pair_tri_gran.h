@@ -5,7 +5,7 @@
 // hooke/stiffness force law with friction; forces and torques go to both particles.
 //
 //   pair_style tri/gran [model hooke/stiffness|hooke|hertz] [contact keywords, see
-//                       contact_settings.h]
+//                       contact_settings.h] [keep_contacts T|no]
 //   pair_coeff * *
 //
 // The material (material_table.h) is read in init_style, before LIGGGHTS sizes the neighbour
@@ -19,7 +19,11 @@
 // after the tangential ones), so a pair within reach that touches nothing costs O(vertices)
 // per step; the forces do not depend on it. Pairs within reach keep their triangle-pair
 // candidates between steps (candidate_store.h, keyword `coherence`); nor do the forces depend
-// on those.
+// on those. Pairs in contact keep their contact points (keep_contacts, default 1e-4 of the
+// layer: interaction/kept_contacts.h), carried with the bodies while their relative motion
+// stays within that tolerance, and measured again beyond it; the points live in fix
+// tri/kept_contacts (kept_contact_store.h), which this style creates and which moves them with
+// the atoms between ranks and into restart files.
 //
 // The loop, scratch, error capture and ordered sums are tri::InteractionEngine's (shared with
 // fix tri/wall); this style lists the pairs and says what its two bodies are (EngineHost). It
@@ -48,11 +52,13 @@
 #include "candidate_store.h"
 #include "contact_board.h"
 #include "contact_settings.h"
+#include "kept_contact_store.h"
 #include "interaction/interaction_engine.h"
 #include "material_table.h"
 #include "particle_travel.h"
 #include "world_cache.h"
 
+#include <cstdint>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -78,6 +84,7 @@ private:
     double *touching_values; // all of this pair style's history values, or null
     int *touching;   // LIGGGHTS keeps (migrates, restarts) the history only where this is set
     tri::CandidateCache *candidates; // the pair's kept candidates, or null
+    double *kept; // the pair's kept contact points (kept_contact_store.h), or null
     bool apart = false; // proven apart by its kept gap or axis, from the poses (prepare)
     // Not apart: its atoms with their world-frame triangles (FixTriParticles::task_body).
     const tri::Body *body_i = nullptr, *body_j = nullptr;
@@ -98,6 +105,12 @@ private:
   // and `apart` (tri::proven_apart, from those records without their triangles): only the
   // other tasks' atoms need world-frame triangles this step.
   void prepare(Task &task, bool update_history);
+  // Whether the task's kept contact points hold this step (tri::kept_contacts_hold, from the
+  // poses): then its atoms' world-frame triangles are not needed.
+  bool carries_kept_contacts(const Task &task);
+  void parse_keep_contacts(int narg, char **arg, int *i);
+  void find_kept_contacts();
+  std::uint64_t kept_key(int i, int j) const;
   // What the engine asks of this style for task k (interaction_engine.h: the host).
   struct EngineHost {
     PairTriGran &style;
@@ -123,6 +136,7 @@ private:
   tri::InteractionEngine engine_;
   tri_liggghts::CandidateStore candidates_;
   int axis_offset_ = -1; // where the separating axis starts in a pair's history values
+  tri_liggghts::KeptContactStore *kept_ = nullptr; // fix tri/kept_contacts's; null: none kept
   // Pairs within reach that the travel proof passed over while listing (no task): as tasks they
   // would be proven apart and change nothing (their history is clear: the evaluation that kept
   // their gap cleared it). `before`: the number of tasks listed before it, so that the fastest

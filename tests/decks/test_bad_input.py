@@ -101,6 +101,11 @@ BAD_CONTACT = {
     "wall_bad_coherence": ({"wall": "fix walls all tri/wall mesh cad coherence soon"},
                            r"tri/wall: 'coherence' expects no or a reach in \(0, 10\] times "
                            r"the contact cutoff, got 'soon'"),
+    "pair_bad_keep_contacts": ({"pairstyle": "tri/gran keep_contacts 0.5"},
+                               r"Pair tri/gran: 'keep_contacts' expects no or a tolerance in "
+                               r"\(0, 0.01\] times the combined soft layer, got '0.5'"),
+    "wall_keep_contacts": ({"wall": "fix walls all tri/wall mesh cad keep_contacts 1e-4"},
+                           r"tri/wall: 'keep_contacts' is a keyword of pair tri/gran"),
     "pair_newton_on": ({"newton": "on off"},
                        r"Pair granular with shear history requires newton pair off"),
 }

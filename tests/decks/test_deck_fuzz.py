@@ -151,7 +151,8 @@ def deck(rng):
     lines.append(particles_fix(d, types))
     model = d.rng.choice(["hooke/stiffness", "hooke", "hertz"])
     lines.append(material(d, model, types))
-    lines.append(f"pair_style tri/gran model {model} {contact_keywords(d)}".rstrip())
+    keep = f" keep_contacts {d.value(1e-5, 1e-3) if d.maybe() else 'no'}" if d.maybe() else ""
+    lines.append(f"pair_style tri/gran model {model} {contact_keywords(d)}{keep}".rstrip())
     lines.append("pair_coeff * *")
     lines.append("fix floor all mesh/surface file floor.stl type 1")
     wall = "fix walls all tri/wall mesh floor"

@@ -169,3 +169,50 @@ def test_threads_periodic_gas(ctx):
     differ = [t for t in ref if ref[t] != got[t]]
     check(not differ, f"atoms {differ[:5]} differ between 1 and 2 threads, e.g.\n "
           f"{ref[differ[0]] if differ else ''}\n {got[differ[0]] if differ else ''}")
+
+
+def test_kept_contacts_replay(ctx):
+    """A pile of twelve rocks settling (in.kept_pile): most particle pairs in contact carry their
+    kept contact points (pair tri/gran keep_contacts, the default) rather than measure them.
+    The run is replayed with 2 OpenMP threads, on 2 MPI ranks (the boundary x = 0 through the
+    pile), and from a restart written halfway (the kept points in the file, read by a new
+    process): every final dump (%.17g) must be bitwise the plain run's. With keep_contacts no
+    the pile is measured every step and carries nothing."""
+    make_contact_meshes(ctx.work)
+    n = 15000
+    finals, carried_share = {}, None
+
+    def final(phase):
+        step, atoms = last_frame(os.path.join(ctx.work, CLUSTER_OUT.format(phase)))
+        check(step == 2 * n and len(atoms) == 12, f"{phase}: step {step}, {len(atoms)} atoms")
+        return atoms
+
+    _, out = run_deck(ctx, "in.kept_pile", {"phase": "full", "nsteps": 2 * n, "dump_every": n,
+                                            "thermo_every": 1000})
+    rows = [r for r in thermo_rows(out, ("stats", "pstats")) if r["Step"] > n]
+    touching = sum(r["pstats.pairs_in_contact"] for r in rows)
+    carried = sum(r["pstats.contacts_carried"] for r in rows)
+    carried_share = carried / max(touching, 1)
+    print(f"second half: {touching:g} particle pairs in contact, {carried:g} carried "
+          f"({carried_share:.2f})")
+    check(touching > 100 and carried_share > 0.5,
+          f"the settled pile carried {carried:g} of {touching:g} particle contacts")
+    finals["full"] = final("full")
+    run_deck(ctx, "in.kept_pile", {"phase": "t2", "nsteps": 2 * n, "dump_every": n},
+             env_extra={"OMP_NUM_THREADS": "2"})
+    finals["2 threads"] = final("t2")
+    run_deck(ctx, "in.kept_pile", {"phase": "mpi", "nsteps": 2 * n, "dump_every": n, "px": 2},
+             ranks=2)
+    finals["2 ranks"] = final("mpi")
+    run_deck(ctx, "in.kept_pile", {"phase": "first", "nsteps": n, "dump_every": n, "write": "yes"})
+    run_deck(ctx, "in.kept_pile_resume", {"phase": "second", "nsteps": n, "dump_every": n})
+    finals["restart"] = final("second")
+    ref = finals["full"]
+    for what, atoms in finals.items():
+        differ = [t for t in ref if atoms.get(t) != ref[t]]
+        check(not differ, f"{what}: atoms {differ} differ from the plain run, e.g.\n "
+              f"{ref[differ[0]] if differ else ''}\n {atoms.get(differ[0]) if differ else ''}")
+    _, out = run_deck(ctx, "in.kept_pile", {"phase": "measured", "nsteps": 2 * n, "dump_every": n,
+                                            "thermo_every": 1000, "pairargs": "keep_contacts no"})
+    carried = sum(r["pstats.contacts_carried"] for r in thermo_rows(out, ("stats", "pstats")))
+    check(carried == 0, f"keep_contacts no carried {carried:g} contacts")

@@ -21,6 +21,7 @@ ContactStats &ContactStats::operator+=(const ContactStats &o) {
   contacts += o.contacts;
   bodies_separated += o.bodies_separated;
   candidates_kept += o.candidates_kept;
+  contacts_carried += o.contacts_carried;
   HybridCounters::operator+=(o);
   return *this;
 }

@@ -105,6 +105,8 @@ struct ContactStats : HybridCounters { // triangle_pairs_tested among HybridCoun
                                        // axis, wall planes: body_interaction.h)
   long long candidates_kept = 0;       // body pairs searched among kept candidates
                                        // (candidate_cache.h), not culled afresh
+  long long contacts_carried = 0;      // body pairs whose kept contact points were carried
+                                       // (interaction/kept_contacts.h), not measured
 
   ContactStats &operator+=(const ContactStats &o);
 };

@@ -286,6 +286,11 @@ void update_separation_cache(const Body &a, const Body &b, const InteractionSett
   }
 }
 
+// Whether a measurement of this pair keeps its points for the next step (kept_contacts.h).
+bool keeps_contacts(const Body &b, const InteractionSettings &s, const SeparationCache &cache) {
+  return cache.kept_contacts && cache.update && s.kept_tolerance > 0.0 && !b.is_wall();
+}
+
 // How the pair's triangle contacts become contact points (contact_reduction.h).
 ReductionParams reduction_params(const Body &a, const Body &b, const InteractionSettings &s,
                                  bool classify) {
@@ -328,11 +333,16 @@ PairForceResult forces_from_contacts(const Body &a, const Body &b, const Interac
                                      int num_contacts) {
   const bool touching = num_contacts > 0;
   update_separation_cache(a, b, s, cache, touching, tested, num_tested);
+  const bool keep = keeps_contacts(b, s, cache);
   if (!touching) { // the reduction of nothing needs no parameters
     scratch.points.clear();
+    if (keep && contacts_kept(cache.kept_contacts))
+      clear_kept_contacts(cache.kept_contacts);
     return pair_contact_force(scratch.points, a.state, b.state, s.coefficients, dt, history);
   }
-  const ReductionParams params = reduction_params(a, b, s, scratch.record_contacts);
+  // Kept points are classified whether or not this step records them: a record of a carried
+  // point must say what a measured one would.
+  const ReductionParams params = reduction_params(a, b, s, scratch.record_contacts || keep);
   reduce_kernel_results(pairs, tested, num_tested, contact_cutoff(a, b), *a.triangles, a.epsilon,
                         *b.triangles, b.epsilon, params, scratch.reduction, scratch.points);
   const double layer = a.epsilon + b.epsilon;
@@ -344,6 +354,11 @@ PairForceResult forces_from_contacts(const Body &a, const Body &b, const Interac
   place_between_given_surfaces(a.epsilon, b.epsilon, scratch.points);
   if (params.keep_shallow)
     ball_contacts(ball_side(a), ball_side(b), scratch.points);
+  if (keep) { // and the force from the kept points (kept_contacts.h)
+    keep_contacts(a.pose, b.pose, scratch.points, cache.kept_contacts);
+    if (contacts_kept(cache.kept_contacts))
+      carry_kept_contacts(cache.kept_contacts, a.pose, b.pose, scratch.points);
+  }
   PairForceResult r = pair_contact_force(scratch.points, a.state, b.state, s.coefficients, dt,
                                          history,
                                          scratch.record_contacts ? &scratch.records : nullptr);
@@ -440,11 +455,35 @@ PairPlan plan_search(const Body &a, const Body &b, const InteractionSettings &s,
   return run_kernel_at_once(a, b, s, dt, history, scratch, stats, cache, list, reach, found, count);
 }
 
+// The forces from the pair's kept contact points carried to the bodies' poses (kept_contacts.h).
+PairForceResult carried_contacts_result(const Body &a, const Body &b, const InteractionSettings &s,
+                                        double dt, double *history, InteractionScratch &scratch,
+                                        ContactStats &stats, const SeparationCache &cache) {
+  ++stats.contacts_carried;
+  carry_kept_contacts(cache.kept_contacts, a.pose, b.pose, scratch.points);
+  PairForceResult r = pair_contact_force(scratch.points, a.state, b.state, s.coefficients, dt,
+                                         history,
+                                         scratch.record_contacts ? &scratch.records : nullptr);
+  r.layer = a.epsilon + b.epsilon;
+  r.depth_limit = deep_contact_limit(a.thinnest, b.thinnest);
+  return r;
+}
+
 } // namespace
+
+bool kept_contacts_hold(const Body &a, const Body &b, const InteractionSettings &s,
+                        const SeparationCache &cache) {
+  if (!cache.kept_contacts || !(s.kept_tolerance > 0.0) || b.is_wall() || a.is_wall())
+    return false;
+  return kept_contacts_motion(cache.kept_contacts, a.pose, b.pose) <=
+         s.kept_tolerance * (a.epsilon + b.epsilon);
+}
 
 PairPlan plan_body_pair(const Body &a, const Body &b, const InteractionSettings &s, double dt,
                         double *history, InteractionScratch &scratch, ContactStats &stats,
                         SeparationCache cache) {
+  if (kept_contacts_hold(a, b, s, cache))
+    return carried_contacts_result(a, b, s, dt, history, scratch, stats, cache);
   // Kept candidates replace the search (candidate_cache.h); not with the batched kernel, whose
   // result for a pair depends on its batch.
   CandidateCache *kept = s.coherence > 0.0 ? cache.candidates : nullptr;

@@ -25,6 +25,7 @@
 #include "contact/penetration_depth.h"
 #include "distance/candidate_cache.h"
 #include "distance/particle_contacts.h"
+#include "interaction/kept_contacts.h"
 #include "model/contact_force.h"
 
 #include <cstddef>
@@ -44,6 +45,9 @@ struct InteractionSettings {
   // move less than the reach; 0: none kept.
   // Not with the batched kernel, whose result for a pair depends on its batch.
   double coherence = 0.05;
+  // Kept contact points (kept_contacts.h) are carried while the bodies move less than this
+  // times eps_a + eps_b relative to each other; 0: every contact is measured every step.
+  double kept_tolerance = kKeptContactTolerance;
 };
 
 // Per-thread scratch, owned by the caller, so the force loop allocates nothing once warmed up.
@@ -134,6 +138,9 @@ struct SeparationCache {
   // Two particles' running motion sums (candidate_cache.h: Travel), where the host keeps them:
   // proven_apart tries the travel proof first, and every gap proven is kept for it.
   Travel travel = {};
+  // Two particles' kept contact points (kKeptContactDoubles values, kept_contacts.h, in the
+  // orientation (a, b)), where the host keeps them; null: none kept.
+  double *kept_contacts = nullptr;
 };
 
 // Whether the kept state of the pair proves a and b apart: the travel proof, then the kept gap
@@ -163,6 +170,13 @@ PairForceResult apart_result(const Body &a, const Body &b, const InteractionSett
 // neighbour pairs of a pile are apart with a clear history; the host skips their view.
 bool apart_needs_nothing(const double *stored_history);
 PairForceResult apart_result(ContactStats &stats);
+
+// Whether the pair's kept contact points (SeparationCache::kept_contacts) are carried this step
+// rather than measured: two particles whose relative motion since the points were kept is
+// within s.kept_tolerance of their layer (kept_contacts.h). Reads the bodies' poses only, never
+// their triangles, so a host asks before it builds them; plan_body_pair then carries them.
+bool kept_contacts_hold(const Body &a, const Body &b, const InteractionSettings &s,
+                        const SeparationCache &cache);
 
 // Which candidates a kernel request runs on, and what finish_body_pair does with them.
 enum class CandidateList {
@@ -194,10 +208,12 @@ using PairPlan = std::variant<PairForceResult, KernelRequest>;
 // direction from a's centre to the closest point of the patch. Contacts whose real surfaces
 // intersect get their depth through the intersection (penetration_depth.h) before the force
 // law; the result carries the combined layer and the resolvable depth so that the host can
-// stop a contact deeper than that. `cache` as above (default: none; the result does not
-// depend on it). Where the kernel can be queued (can_queue_candidates) and there are
-// candidates, the outcome is a KernelRequest; else the kernel runs at once and the outcome is
-// the result.
+// stop a contact deeper than that. `cache` as above (default: none); the result depends on it
+// only through kept contact points: where they hold (kept_contacts_hold) they are carried, and
+// the outcome is the result without a search (within kept_contacts.h's tolerance of a
+// measurement); a pair measured with kept_contacts and cache.update keeps its points for the
+// next step. Where the kernel can be queued (can_queue_candidates) and there are candidates,
+// the outcome is a KernelRequest; else the kernel runs at once and the outcome is the result.
 PairPlan plan_body_pair(const Body &a, const Body &b, const InteractionSettings &s, double dt,
                         double *history, InteractionScratch &scratch, ContactStats &stats,
                         SeparationCache cache = {});

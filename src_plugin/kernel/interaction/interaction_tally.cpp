@@ -149,6 +149,12 @@ std::vector<StatColumn> make_columns() {
                            "are listed: their kept gap less the particles' motion since it was "
                            "proven (the travel proof); nothing of them is read",
                            [](Tally &t, int) { return &t.body_pairs_passed; }));
+  // Kept contact points (kept_contacts.h), appended.
+  c.push_back(count_column("contacts_carried",
+                           "body pairs of pairs_checked whose kept contact points were carried "
+                           "with the bodies' motion, not measured (it stayed within the kept "
+                           "tolerance)",
+                           [](Tally &t, int) { return &t.distance.contacts_carried; }));
   Tally probe;
   const char *base = reinterpret_cast<const char *>(&probe);
   for (StatColumn &column : c) {

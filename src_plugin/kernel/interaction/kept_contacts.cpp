@@ -1,0 +1,184 @@
+#include "interaction/kept_contacts.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace tri {
+
+namespace {
+
+using Eigen::Matrix3d;
+using Eigen::Quaterniond;
+using Eigen::Vector3d;
+
+// Offsets of a kept point's values (kKeptContactPointDoubles of them), a's body frame.
+enum PointField {
+  kPoint = 0,
+  kNormal = 3,
+  kDamping = 6,
+  kOverlap = 9,
+  kEnergyOverlap,
+  kMinDistance,
+  kMerged,
+  kLabels, // tri_a, tri_b and kind in one exact integer (pack_labels)
+  kArea,
+  kMeanRadius,
+  kFaceWeight,
+  kMoment, // xx, xy, xz, yy, yz, zz
+  kPointEnd = kMoment + 6
+};
+static_assert(kPointEnd == kKeptContactPointDoubles, "kept point layout");
+
+// Triangle indices below 2^24 (a mesh of 16 million triangles), -1 included; kinds below 8:
+// the sum stays below 2^53, so the double holds it exactly.
+constexpr double kLabelBase = 33554432.0; // 2^25
+double pack_labels(const ContactPoint &c) {
+  return (c.tri_a + 1) + kLabelBase * ((c.tri_b + 1) + kLabelBase * static_cast<int>(c.kind));
+}
+void unpack_labels(double v, ContactPoint &c) {
+  const auto packed = static_cast<long long>(v);
+  const auto base = static_cast<long long>(kLabelBase);
+  c.tri_a = static_cast<int>(packed % base) - 1;
+  c.tri_b = static_cast<int>((packed / base) % base) - 1;
+  c.kind = static_cast<ContactKind>(packed / (base * base));
+}
+
+// b's pose seen from a: its centre in a's frame and its turn relative to a.
+struct RelativePose {
+  Vector3d t;
+  Quaterniond r;
+};
+
+RelativePose relative_pose(const RigidPose &a, const RigidPose &b) {
+  const Quaterniond qa(a.q), qb(b.q);
+  return {qa.conjugate() * (b.x - a.x), qa.conjugate() * qb};
+}
+
+RelativePose read_relative(const double *kept) {
+  return {Vector3d(kept[1], kept[2], kept[3]), Quaterniond(kept[4], kept[5], kept[6], kept[7])};
+}
+
+void write_point(const ContactPoint &c, const Matrix3d &to_a, const Vector3d &origin,
+                 double *out) {
+  const Vector3d p = to_a * (c.point - origin), n = to_a * c.normal,
+                 d = to_a * (c.damping_point - origin);
+  const Matrix3d m = to_a * c.patch_second_moment * to_a.transpose();
+  for (int k = 0; k < 3; ++k) {
+    out[kPoint + k] = p[k];
+    out[kNormal + k] = n[k];
+    out[kDamping + k] = d[k];
+  }
+  out[kOverlap] = c.overlap;
+  out[kEnergyOverlap] = c.energy_overlap;
+  out[kMinDistance] = c.min_distance;
+  out[kMerged] = c.num_merged;
+  out[kLabels] = pack_labels(c);
+  out[kArea] = c.patch_area;
+  out[kMeanRadius] = c.patch_mean_radius;
+  out[kFaceWeight] = c.face_weight;
+  const double moment[6] = {m(0, 0), m(0, 1), m(0, 2), m(1, 1), m(1, 2), m(2, 2)};
+  std::copy(moment, moment + 6, out + kMoment);
+}
+
+Matrix3d read_moment(const double *in) {
+  const double *m = in + kMoment;
+  Matrix3d out;
+  out << m[0], m[1], m[2], m[1], m[3], m[4], m[2], m[4], m[5];
+  return out;
+}
+
+// A kept point carried by b's motion relative to a (`turn`, and `moved`: where b's material
+// at a point of a's frame is now), in a's frame.
+ContactPoint carry_point(const double *in, const Matrix3d &turn,
+                         const Eigen::Transform<double, 3, Eigen::Isometry> &moved) {
+  ContactPoint c;
+  const Vector3d p(in + kPoint), n0(in + kNormal), d(in + kDamping);
+  const Vector3d pb = moved * p;
+  const Vector3d n = (n0 + turn * n0).normalized();
+  const double apart = (pb - p).dot(n);
+  const Matrix3d half = 0.5 * (Matrix3d::Identity() + turn);
+  c.point = 0.5 * (p + pb);
+  c.normal = n;
+  c.damping_point = 0.5 * (d + moved * d);
+  c.overlap = in[kOverlap] - apart;
+  c.energy_overlap = in[kEnergyOverlap] - apart;
+  c.min_distance = std::max(0.0, in[kMinDistance] + apart);
+  c.num_merged = static_cast<int>(in[kMerged]);
+  unpack_labels(in[kLabels], c);
+  c.patch_area = in[kArea];
+  c.patch_mean_radius = in[kMeanRadius];
+  c.face_weight = in[kFaceWeight];
+  c.patch_second_moment = half * read_moment(in) * half.transpose();
+  return c;
+}
+
+} // namespace
+
+void clear_kept_contacts(double *kept) { std::fill(kept, kept + kKeptContactDoubles, 0.0); }
+
+void keep_contacts(const RigidPose &a, const RigidPose &b, const std::vector<ContactPoint> &points,
+                   double *kept) {
+  const int n = static_cast<int>(points.size());
+  const bool keepable =
+      n > 0 && n <= kKeptContactPoints &&
+      std::none_of(points.begin(), points.end(), [](const ContactPoint &c) {
+        return c.intersecting || c.kind == ContactKind::deep || !std::isfinite(c.overlap);
+      });
+  if (!keepable) {
+    if (contacts_kept(kept))
+      clear_kept_contacts(kept);
+    return;
+  }
+  const RelativePose rel = relative_pose(a, b);
+  kept[0] = n;
+  for (int k = 0; k < 3; ++k)
+    kept[1 + k] = rel.t[k];
+  kept[4] = rel.r.w();
+  kept[5] = rel.r.x();
+  kept[6] = rel.r.y();
+  kept[7] = rel.r.z();
+  const Matrix3d to_a = Quaterniond(a.q).conjugate().toRotationMatrix();
+  for (int k = 0; k < kKeptContactPoints; ++k) {
+    double *out = kept + kKeptContactHeader + k * kKeptContactPointDoubles;
+    if (k < n)
+      write_point(points[k], to_a, a.x, out);
+    else
+      std::fill_n(out, kKeptContactPointDoubles, 0.0);
+  }
+}
+
+double kept_contacts_motion(const double *kept, const RigidPose &a, const RigidPose &b) {
+  if (!contacts_kept(kept) || !(b.radius > 0.0))
+    return std::numeric_limits<double>::infinity();
+  const RelativePose then = read_relative(kept), now = relative_pose(a, b);
+  const double turned = 2.0 * (now.r * then.r.conjugate()).vec().norm() * b.radius;
+  const double d = (now.t - then.t).norm() + turned;
+  return std::isfinite(d) ? d : std::numeric_limits<double>::infinity();
+}
+
+void carry_kept_contacts(const double *kept, const RigidPose &a, const RigidPose &b,
+                         std::vector<ContactPoint> &points) {
+  points.clear();
+  const int n = static_cast<int>(kept[0]);
+  const RelativePose then = read_relative(kept), now = relative_pose(a, b);
+  // b's material at a point p of a's frame: kept at turn_then^-1 (p - t_then) in b's frame,
+  // now at turn_now of that plus t_now.
+  const Matrix3d turn = (now.r * then.r.conjugate()).normalized().toRotationMatrix();
+  Eigen::Transform<double, 3, Eigen::Isometry> moved = Eigen::Transform<double, 3, Eigen::Isometry>::Identity();
+  moved.linear() = turn;
+  moved.translation() = now.t - turn * then.t;
+  const Matrix3d to_world = Quaterniond(a.q).toRotationMatrix();
+  for (int k = 0; k < n; ++k) {
+    ContactPoint c =
+        carry_point(kept + kKeptContactHeader + k * kKeptContactPointDoubles, turn, moved);
+    c.point = to_world * c.point + a.x;
+    c.damping_point = to_world * c.damping_point + a.x;
+    c.normal = to_world * c.normal;
+    c.patch_second_moment = to_world * c.patch_second_moment * to_world.transpose();
+    points.push_back(c);
+  }
+}
+
+} // namespace tri

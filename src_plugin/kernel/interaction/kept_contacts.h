@@ -1,0 +1,77 @@
+// A particle pair's contact points kept between steps: a contact at rest is carried with the
+// two bodies instead of being measured again.
+//
+// Why. In a settled pile the same triangle pairs give the same polygons every step, moved by
+// nanometres; measuring them again (the distance kernel and the reduction) is about half of a
+// step. So after a pair is measured, its contact points and both bodies' poses are kept, and
+// while the bodies have since moved relative to each other by less than a tolerance tau, the
+// kept points are moved with them rather than measured.
+//
+// The update. The points are kept in a's body frame, with b's pose seen from a. Carried, each
+// point p stays where a's material was and goes where b's is now, p_b; the point (and the
+// dashpot's point) becomes their midpoint, the normal the normalised mean of the kept normal
+// and its turn with b, the patch's moments turn with the mean of both, and the overlap (and the
+// energy overlap) falls by (p_b - p) . n: how far b's material at the point has moved away from
+// a's along the normal; min_distance rises by as much. Kind, area, members and triangles are
+// kept. A measured pair's forces come from its points kept and carried back at once, so that a
+// step's forces are the same function of the kept values whether they were measured this step
+// or earlier (a restart's first step, which reads them from the file, included).
+//
+// The bound. D is the largest displacement of a vertex of b seen from a's frame since the poses
+// were kept: |t - t0| + 2 sin(theta / 2) r_b, (t, theta) b's relative translation and turn in
+// a's frame (rigid_pose.h, the same bound as candidate_cache.h's, but relative: a pile that
+// moves as one keeps its contacts). A measured overlap is a maximum (or smooth maximum) of
+// triangle-pair overlaps, each of which a motion D changes by at most D, and the update changes
+// the kept one by at most D, so a carried overlap is within about 2 D of a measured one (plus
+// the kernel's own tolerance, certified_tolerance). Points are kept only while D <= tau =
+// tolerance x (eps_a + eps_b); a contact that a measurement would have begun within that motion
+// starts with an overlap below tau, inside the fade-in of contact_reduction.h step 5 (a taper of
+// 1e-3 of the layer), where its force is nearly zero.
+//
+// Where the points live. In the pair's LIGGGHTS history values (kKeptContactDoubles after the
+// friction history), so that they migrate with the atoms and are written to restart files: the
+// decision to carry or measure, and what is carried, are the same on any rank count, thread
+// count and after a restart. They are kept in the orientation (a, b) the kernel sees, which
+// hosts make canonical (lower tag first), so LIGGGHTS never flips their signs.
+//
+// Not kept (measured every step): a pair with more than kKeptContactPoints points, one whose
+// surfaces intersect (a deep contact), a pair with a wall, or any pair when the tolerance is 0.
+#pragma once
+
+#include "body/rigid_pose.h"
+#include "contact/contact_point.h"
+
+#include <vector>
+
+namespace tri {
+
+// LIGGGHTS 3.8 holds at most 99 history values per pair (PairGran::init_style writes their
+// count into 3 characters); the friction history and the axis take 43.
+constexpr int kKeptContactPoints = 2;
+constexpr int kKeptContactHeader = 8;        // count, b's position and turn seen from a
+constexpr int kKeptContactPointDoubles = 23; // one ContactPoint (kept_contacts.cpp)
+constexpr int kKeptContactDoubles =
+    kKeptContactHeader + kKeptContactPoints * kKeptContactPointDoubles; // 54
+
+// Default tau in units of the layer eps_a + eps_b: the distance kernel's certified tolerance
+// (1e-4 eps), so that a carried overlap is as exact as a measured one.
+constexpr double kKeptContactTolerance = 1e-4;
+
+// Whether `kept` (kKeptContactDoubles values) holds contact points.
+inline bool contacts_kept(const double *kept) { return kept && kept[0] != 0.0; }
+
+// Keeps `points`, measured at the poses a and b, or clears `kept` where they cannot be kept
+// (header).
+void keep_contacts(const RigidPose &a, const RigidPose &b, const std::vector<ContactPoint> &points,
+                   double *kept);
+void clear_kept_contacts(double *kept);
+
+// The relative motion D since the poses were kept (header), m; infinity without kept points or
+// for poses of other shapes.
+double kept_contacts_motion(const double *kept, const RigidPose &a, const RigidPose &b);
+
+// The kept points carried to the poses a and b (header), into `points`.
+void carry_kept_contacts(const double *kept, const RigidPose &a, const RigidPose &b,
+                         std::vector<ContactPoint> &points);
+
+} // namespace tri
