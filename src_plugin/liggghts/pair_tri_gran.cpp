@@ -182,7 +182,11 @@ void PairTriGran::collect_tasks() {
                            tag[i], tag[j]});
         continue;
       }
-      double *kept = kept_ ? kept_->entry(slot, kept_key(i, j)) : nullptr;
+      // Only a pair that touched last step can hold kept points, and with the tangential
+      // history such a pair has its first slot occupied: the others are not looked up, and a
+      // contact that begins keeps its points from its second step.
+      const bool may_hold = !history || !tri::apart_needs_nothing(history);
+      double *kept = kept_ && may_hold ? kept_->entry(slot, kept_key(i, j)) : nullptr;
       tasks_.push_back({i, j, swapped, history, axis, values, touching, candidates, kept});
     }
   }
@@ -262,7 +266,8 @@ tri::PairPlan PairTriGran::EngineHost::plan(std::size_t k, int thread,
     return tri::apart_result(stats); // the axis stays as it is: its view would write it back
   // World-frame triangles as they are needed (a thread's recent ones): not for a pair apart or
   // one whose kept contact points are carried (both read the poses alone).
-  if (!task.apart && !style.carries_kept_contacts(task)) {
+  const bool carried = !task.apart && style.carries_kept_contacts(task);
+  if (!task.apart && !carried) {
     task.body_i = &style.particles_->task_body(task.i, thread, style.pins_.of(k));
     task.body_j = &style.particles_->task_body(task.j, thread, style.pins_.of(k));
   }
@@ -270,6 +275,8 @@ tri::PairPlan PairTriGran::EngineHost::plan(std::size_t k, int thread,
       task, update_history,
       [&](const tri::Body &a, const tri::Body &b, const tri::InteractionSettings &s,
           double *history, const tri::SeparationCache &cache) -> tri::PairPlan {
+        if (carried)
+          return tri::carried_contacts_result(a, b, s, dt, history, scratch, stats, cache);
         if (task.apart) {
           if (update_history && tri::contacts_kept(task.kept))
             tri::clear_kept_contacts(task.kept);

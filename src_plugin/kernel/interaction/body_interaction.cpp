@@ -354,11 +354,8 @@ PairForceResult forces_from_contacts(const Body &a, const Body &b, const Interac
   place_between_given_surfaces(a.epsilon, b.epsilon, scratch.points);
   if (params.keep_shallow)
     ball_contacts(ball_side(a), ball_side(b), scratch.points);
-  if (keep) { // and the force from the kept points (kept_contacts.h)
+  if (keep)
     keep_contacts(a.pose, b.pose, scratch.points, cache.kept_contacts);
-    if (contacts_kept(cache.kept_contacts))
-      carry_kept_contacts(cache.kept_contacts, a.pose, b.pose, scratch.points);
-  }
   PairForceResult r = pair_contact_force(scratch.points, a.state, b.state, s.coefficients, dt,
                                          history,
                                          scratch.record_contacts ? &scratch.records : nullptr);
@@ -455,7 +452,16 @@ PairPlan plan_search(const Body &a, const Body &b, const InteractionSettings &s,
   return run_kernel_at_once(a, b, s, dt, history, scratch, stats, cache, list, reach, found, count);
 }
 
-// The forces from the pair's kept contact points carried to the bodies' poses (kept_contacts.h).
+} // namespace
+
+bool kept_contacts_hold(const Body &a, const Body &b, const InteractionSettings &s,
+                        const SeparationCache &cache) {
+  if (!cache.kept_contacts || !(s.kept_tolerance > 0.0) || b.is_wall() || a.is_wall())
+    return false;
+  return kept_contacts_motion(cache.kept_contacts, a.pose, b.pose) <=
+         s.kept_tolerance * (a.epsilon + b.epsilon);
+}
+
 PairForceResult carried_contacts_result(const Body &a, const Body &b, const InteractionSettings &s,
                                         double dt, double *history, InteractionScratch &scratch,
                                         ContactStats &stats, const SeparationCache &cache) {
@@ -467,16 +473,6 @@ PairForceResult carried_contacts_result(const Body &a, const Body &b, const Inte
   r.layer = a.epsilon + b.epsilon;
   r.depth_limit = deep_contact_limit(a.thinnest, b.thinnest);
   return r;
-}
-
-} // namespace
-
-bool kept_contacts_hold(const Body &a, const Body &b, const InteractionSettings &s,
-                        const SeparationCache &cache) {
-  if (!cache.kept_contacts || !(s.kept_tolerance > 0.0) || b.is_wall() || a.is_wall())
-    return false;
-  return kept_contacts_motion(cache.kept_contacts, a.pose, b.pose) <=
-         s.kept_tolerance * (a.epsilon + b.epsilon);
 }
 
 PairPlan plan_body_pair(const Body &a, const Body &b, const InteractionSettings &s, double dt,

@@ -177,6 +177,12 @@ PairForceResult apart_result(ContactStats &stats);
 // their triangles, so a host asks before it builds them; plan_body_pair then carries them.
 bool kept_contacts_hold(const Body &a, const Body &b, const InteractionSettings &s,
                         const SeparationCache &cache);
+// The result of a pair whose kept contact points hold (kept_contacts_hold): the force law on the
+// points carried to the bodies' poses. plan_body_pair gives it too; a host that asked
+// kept_contacts_hold already calls this instead, and the motion is not bounded twice.
+PairForceResult carried_contacts_result(const Body &a, const Body &b, const InteractionSettings &s,
+                                        double dt, double *history, InteractionScratch &scratch,
+                                        ContactStats &stats, const SeparationCache &cache);
 
 // Which candidates a kernel request runs on, and what finish_body_pair does with them.
 enum class CandidateList {

@@ -89,19 +89,24 @@ Matrix3d read_moment(const double *in) {
   return out;
 }
 
-// A kept point carried by b's motion relative to a (`turn`, and `moved`: where b's material
-// at a point of a's frame is now), in a's frame.
-ContactPoint carry_point(const double *in, const Matrix3d &turn,
-                         const Eigen::Transform<double, 3, Eigen::Isometry> &moved) {
+// b's motion relative to a since the points were kept, in a's frame: `turn`, and `moved`, where
+// b's material at a point of a's frame is now; `half` the mean of a's (none) and b's turn.
+struct RelativeMotion {
+  Matrix3d turn, half;
+  Eigen::Isometry3d moved;
+};
+
+// A kept point carried by that motion into a's frame, then placed in the world by a's pose
+// (`to_world`, `origin`). The patch's moments and dashpot point only where there is a patch.
+ContactPoint carry_point(const double *in, const RelativeMotion &m, const Matrix3d &to_world,
+                         const Vector3d &origin) {
   ContactPoint c;
-  const Vector3d p(in + kPoint), n0(in + kNormal), d(in + kDamping);
-  const Vector3d pb = moved * p;
-  const Vector3d n = (n0 + turn * n0).normalized();
+  const Vector3d p(in + kPoint), n0(in + kNormal);
+  const Vector3d pb = m.moved * p;
+  const Vector3d n = (n0 + m.turn * n0).normalized();
   const double apart = (pb - p).dot(n);
-  const Matrix3d half = 0.5 * (Matrix3d::Identity() + turn);
-  c.point = 0.5 * (p + pb);
-  c.normal = n;
-  c.damping_point = 0.5 * (d + moved * d);
+  c.point = to_world * (0.5 * (p + pb)) + origin;
+  c.normal = to_world * n;
   c.overlap = in[kOverlap] - apart;
   c.energy_overlap = in[kEnergyOverlap] - apart;
   c.min_distance = std::max(0.0, in[kMinDistance] + apart);
@@ -110,7 +115,14 @@ ContactPoint carry_point(const double *in, const Matrix3d &turn,
   c.patch_area = in[kArea];
   c.patch_mean_radius = in[kMeanRadius];
   c.face_weight = in[kFaceWeight];
-  c.patch_second_moment = half * read_moment(in) * half.transpose();
+  if (c.patch_area > 0.0) {
+    const Vector3d d(in + kDamping);
+    c.damping_point = to_world * (0.5 * (d + m.moved * d)) + origin;
+    const Matrix3d place = to_world * m.half;
+    c.patch_second_moment = place * read_moment(in) * place.transpose();
+  } else {
+    c.damping_point = c.point;
+  }
   return c;
 }
 
@@ -163,22 +175,17 @@ void carry_kept_contacts(const double *kept, const RigidPose &a, const RigidPose
   points.clear();
   const int n = static_cast<int>(kept[0]);
   const RelativePose then = read_relative(kept), now = relative_pose(a, b);
-  // b's material at a point p of a's frame: kept at turn_then^-1 (p - t_then) in b's frame,
+  // b's material at a point p of a's frame was at turn_then^-1 (p - t_then) in b's frame; it is
   // now at turn_now of that plus t_now.
-  const Matrix3d turn = (now.r * then.r.conjugate()).normalized().toRotationMatrix();
-  Eigen::Transform<double, 3, Eigen::Isometry> moved = Eigen::Transform<double, 3, Eigen::Isometry>::Identity();
-  moved.linear() = turn;
-  moved.translation() = now.t - turn * then.t;
+  RelativeMotion m;
+  m.turn = (now.r * then.r.conjugate()).normalized().toRotationMatrix();
+  m.half = 0.5 * (Matrix3d::Identity() + m.turn);
+  m.moved.linear() = m.turn;
+  m.moved.translation() = now.t - m.turn * then.t;
   const Matrix3d to_world = Quaterniond(a.q).toRotationMatrix();
-  for (int k = 0; k < n; ++k) {
-    ContactPoint c =
-        carry_point(kept + kKeptContactHeader + k * kKeptContactPointDoubles, turn, moved);
-    c.point = to_world * c.point + a.x;
-    c.damping_point = to_world * c.damping_point + a.x;
-    c.normal = to_world * c.normal;
-    c.patch_second_moment = to_world * c.patch_second_moment * to_world.transpose();
-    points.push_back(c);
-  }
+  for (int k = 0; k < n; ++k)
+    points.push_back(
+        carry_point(kept + kKeptContactHeader + k * kKeptContactPointDoubles, m, to_world, a.x));
 }
 
 } // namespace tri

@@ -13,9 +13,7 @@
 // and its turn with b, the patch's moments turn with the mean of both, and the overlap (and the
 // energy overlap) falls by (p_b - p) . n: how far b's material at the point has moved away from
 // a's along the normal; min_distance rises by as much. Kind, area, members and triangles are
-// kept. A measured pair's forces come from its points kept and carried back at once, so that a
-// step's forces are the same function of the kept values whether they were measured this step
-// or earlier (a restart's first step, which reads them from the file, included).
+// kept.
 //
 // The bound. D is the largest displacement of a vertex of b seen from a's frame since the poses
 // were kept: |t - t0| + 2 sin(theta / 2) r_b, (t, theta) b's relative translation and turn in
