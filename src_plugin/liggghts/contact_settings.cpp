@@ -105,6 +105,13 @@ void parse_search_keyword(const std::string &key, const char *value, ContactSett
     s.interaction.coherence = r;
   } else if (key == "separation") {
     s.separation = on_off(key, value, error, style);
+  } else if (key == "keep_contacts") {
+    char *end = nullptr;
+    const double t = v == "no" || v == "off" ? 0.0 : std::strtod(value, &end);
+    if (end && (*end != '\0' || !(t > 0.0) || !(t <= 1e-2)))
+      fail(error, style, "'keep_contacts' expects no or a tolerance in (0, 0.01] times the "
+                         "combined soft layer, got '" + v + "'");
+    s.interaction.kept_tolerance = t;
   }
 }
 
@@ -153,7 +160,7 @@ bool parse_contact_keyword(int narg, char **arg, int *i, ContactSettings &s,
                            const std::string &style, LAMMPS_NS::Error *error) {
   const std::string key = arg[*i];
   static const char *search[] = {"kernel", "newton_iters", "batch",     "parallel",
-                                 "cull",   "separation",   "coherence"};
+                                 "cull",   "separation",   "coherence", "keep_contacts"};
   static const char *model[] = {"reduction", "tangential", "absolute_damping", "limitForce",
                                 "tangential_damping", "model"};
   auto listed = [&key](const auto &keys) {

@@ -16,6 +16,10 @@
 //                                      reuse them while the bodies move less than R x the
 //                                      cutoff (candidate_cache.h; default 0.05; no: cull every
 //                                      step); the contacts are the same
+//   keep_contacts T|no                 carry a contact's points while the bodies move less than
+//                                      T times their layer relative to each other
+//                                      (interaction/kept_contacts.h; default 1e-4; no: measure
+//                                      every contact every step)
 //   reduction clusters|paper|none      contact reduction (default clusters; see
 //                                      contact_reduction.h)
 //   tangential history|no_history      (default history)

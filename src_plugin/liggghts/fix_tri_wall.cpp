@@ -67,9 +67,6 @@ FixTriWall::FixTriWall(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg) 
     } else if (!tri_liggghts::parse_contact_keyword(narg, arg, &i, settings_, kStyle, error)) {
       std::string msg = tri_liggghts::gran_submodel_message(kStyle, arg[i],
                                                             i + 1 < narg ? arg[i + 1] : nullptr);
-      if (msg.empty() && key == "keep_contacts")
-        msg = std::string(kStyle) + ": 'keep_contacts' is a keyword of pair tri/gran (particle "
-                                    "pairs); wall contacts are measured every step";
       if (msg.empty())
         msg = std::string(kStyle) + ": unknown keyword '" + key + "'";
       error->all(FLERR, msg.c_str());
@@ -88,6 +85,9 @@ FixTriWall::FixTriWall(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg) 
 
   // Per mesh: the tangential history, then (after every mesh's history) the separating axis.
   values_per_atom_ = static_cast<int>(meshes_.size()) * (tri::kHistoryDoubles + 3);
+  values_without_kept_ = values_per_atom_;
+  if (settings_.interaction.kept_tolerance > 0.0)
+    values_per_atom_ += static_cast<int>(meshes_.size()) * tri::kKeptContactDoubles;
   restart_peratom = 1;
   scalar_flag = 1;
   extscalar = 0;
@@ -183,6 +183,9 @@ void FixTriWall::collect_tasks() {
         if (tri::slot_occupied(h, 0))
           std::fill(h, h + tri::kHistoryDoubles, 0.0);
         std::fill(axis(a, static_cast<int>(m)), axis(a, static_cast<int>(m)) + 3, 0.0);
+        double *k = kept(a, static_cast<int>(m));
+        if (k && tri::contacts_kept(k))
+          tri::clear_kept_contacts(k);
         continue;
       }
       // Ordered by global triangle id, so the result does not depend on how the mesh is
@@ -194,8 +197,11 @@ void FixTriWall::collect_tasks() {
       task.atom = a;
       task.mesh = static_cast<int>(m);
       task.triangles.clear();
-      for (const auto &p : near[a])
+      task.ids.clear();
+      for (const auto &p : near[a]) {
+        task.ids.push_back(p.first);
         task.triangles.push_back(p.second);
+      }
       task.candidates =
           settings_.interaction.coherence > 0.0
               ? candidates_.entry(ntasks_ - 1,
@@ -240,6 +246,10 @@ void FixTriWall::build_wall(int k, std::vector<Eigen::Vector3d> &nodes,
   wall.state.v = motion.velocity;
   wall.state.omega = motion.omega;
   wall.state.mass = 0.0;
+  // A static mesh's patch keeps its contact points against the world frame (its pose the
+  // world's: Body's default); a moving one is measured every step.
+  task.kept = vnodes ? nullptr : kept(task.atom, task.mesh);
+  wall.triangle_ids = task.kept ? task.ids.data() : nullptr;
 }
 
 void FixTriWall::prepare(int k, bool update_history, NodeScratch &scratch) {
@@ -272,19 +282,37 @@ tri::PairPlan FixTriWall::EngineHost::plan(std::size_t k, int thread,
     fix.prefetch(fix.tasks_[k + kPrefetchAhead]);
   const Task &task = fix.tasks_[k];
   if (task.apart &&
-      tri::apart_needs_nothing(fix.history_[task.atom] + task.mesh * tri::kHistoryDoubles))
+      tri::apart_needs_nothing(fix.history_[task.atom] + task.mesh * tri::kHistoryDoubles) &&
+      !tri::contacts_kept(task.kept))
     return tri::apart_result(stats);
-  if (!task.apart) // prepare asked proven_apart from the particle's pose
+  // The particle's world-frame triangles, unless apart or carried (both read its pose alone).
+  const bool carried = !task.apart && fix.carries_kept_contacts(task);
+  if (!task.apart && !carried)
     fix.tasks_[k].body = &fix.particles_->task_body(task.atom, thread, fix.pins_.of(k));
   return fix.in_kernel_view(
       static_cast<int>(k), update_history,
       [&](const tri::Body &particle, const tri::Body &wall, const tri::InteractionSettings &s,
           double *history) -> tri::PairPlan {
-        if (task.apart)
+        const tri::SeparationCache cache = fix.separation_cache(task, update_history);
+        if (carried)
+          return tri::carried_contacts_result(particle, wall, s, dt, history, scratch, stats,
+                                              cache);
+        if (task.apart) {
+          if (update_history && tri::contacts_kept(task.kept))
+            tri::clear_kept_contacts(task.kept);
           return tri::apart_result(particle, wall, s, dt, history, scratch, stats);
-        return tri::plan_body_pair(particle, wall, s, dt, history, scratch, stats,
-                                   fix.separation_cache(task, update_history));
+        }
+        return tri::plan_body_pair(particle, wall, s, dt, history, scratch, stats, cache);
       });
+}
+
+bool FixTriWall::carries_kept_contacts(const Task &task) {
+  if (!tri::contacts_kept(task.kept))
+    return false;
+  const tri::InteractionSettings &s =
+      materials_.settings(atom->type[task.atom], meshes_[task.mesh]->atomTypeWall());
+  return tri::kept_contacts_hold(particles_->body(task.atom), task.wall, s,
+                                 separation_cache(task, false));
 }
 
 tri::PairForceResult FixTriWall::EngineHost::finish(std::size_t k,
@@ -429,7 +457,11 @@ int FixTriWall::pack_restart(int i, double *buf) {
 void FixTriWall::unpack_restart(int nlocal, int nth) {
   const double *record = tri_liggghts::restart_record(atom->extra, nlocal, nth);
   const int stored = static_cast<int>(record[-1]) - 1; // the record's length prefix
-  if (stored != values_per_atom_) {
+  // Without kept contact points (written with keep_contacts no, or before they existed), or
+  // with them where this run keeps none: the history and axes are read, kept points start empty.
+  const int with_kept = values_without_kept_ +
+                        static_cast<int>(meshes_.size()) * tri::kKeptContactDoubles;
+  if (stored != values_without_kept_ && stored != with_kept) {
     const std::string msg =
         std::string(kStyle) + ": the restart file holds " + std::to_string(stored) +
         " wall history values per particle, this build keeps " +
@@ -437,7 +469,8 @@ void FixTriWall::unpack_restart(int nlocal, int nth) {
         " per mesh): it was written by another version or with other meshes";
     error->one(FLERR, msg.c_str());
   }
-  std::memcpy(history_[nlocal], record, values_per_atom_ * sizeof(double));
+  std::fill(history_[nlocal], history_[nlocal] + values_per_atom_, 0.0);
+  std::memcpy(history_[nlocal], record, std::min(stored, values_per_atom_) * sizeof(double));
 }
 
 int FixTriWall::size_restart(int) { return values_per_atom_ + 1; }

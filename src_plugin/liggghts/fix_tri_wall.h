@@ -24,9 +24,10 @@
 // deepest member, as fix wall/gran gives it (f_MESH[1..3] the total force, [4..6] the torque
 // about its reference point; the per-triangle forces for dump mesh/vtk). f_ID (a global scalar) is the wall-clock time spent in
 // this fix, for a run's time breakdown. The tangential history of each (particle, mesh) pair,
-// and its last proven separating axis (a particle that touches no wall triangle near it costs
-// O(vertices)), are a per-atom array of this fix: migrated with the atom and written to
-// restarts.
+// its last proven separating axis (a particle that touches no wall triangle near it costs
+// O(vertices)) and, on a static mesh, its kept contact points (keep_contacts:
+// interaction/kept_contacts.h) are a per-atom array of this fix: migrated with the atom and
+// written to restarts.
 #pragma once
 
 #include "fix.h"
@@ -70,7 +71,9 @@ private:
   struct Task {
     int atom, mesh;
     std::vector<int> triangles; // mesh-local indices, ordered by global triangle id
+    std::vector<int> ids;       // their global ids (the kept contact points name them)
     tri::CandidateCache *candidates = nullptr; // kept candidates of (atom, mesh), or null
+    double *kept = nullptr; // the kept contact points of (atom, mesh), a static mesh's; or null
     tri::Body wall;     // the patch (patches_[k]) as the kernel sees it (prepare)
     bool apart = false; // proven apart by its kept gap or axis (prepare)
     // Not apart: the particle with its world-frame triangles (FixTriParticles::task_body).
@@ -87,8 +90,17 @@ private:
   // The wall's soft layer, m: E, or the particles' default for walls (none with the layer
   // inside the particles: the wall's mesh is its contact surface).
   double layer_ = 0.0;
-  double **history_ = nullptr; // per atom: meshes_.size() * (kHistoryDoubles + 3)
+  // per atom: meshes_.size() * (kHistoryDoubles + 3), then with keep_contacts
+  // meshes_.size() * kKeptContactDoubles (kept contact points, interaction/kept_contacts.h)
+  double **history_ = nullptr;
   int values_per_atom_ = 0;
+  int values_without_kept_ = 0; // what a restart file written before kept points holds
+  // The kept contact points of (atom a, mesh m); null without keep_contacts.
+  double *kept(int a, int m) {
+    if (values_per_atom_ == values_without_kept_)
+      return nullptr;
+    return history_[a] + values_without_kept_ + tri::kKeptContactDoubles * static_cast<std::size_t>(m);
+  }
   // The separating axis of (atom a, mesh m), particle towards wall (body_interaction.h).
   double *axis(int a, int m) {
     return history_[a] + meshes_.size() * tri::kHistoryDoubles + 3 * static_cast<std::size_t>(m);
@@ -123,6 +135,9 @@ private:
   // particle's pose (tri::proven_apart: no world-frame particle triangles needed; the other
   // tasks ask for them as they go on, FixTriParticles::ensure_world_triangles_of).
   void prepare(int k, bool update_history, NodeScratch &scratch);
+  // Whether task k's kept contact points hold this step (tri::kept_contacts_hold, from the
+  // particle's pose): then its world-frame triangles are not needed.
+  bool carries_kept_contacts(const Task &task);
   void build_wall(int k, std::vector<Eigen::Vector3d> &nodes,
                   std::vector<Eigen::Vector3d> &node_velocities);
   // Runs step(particle, wall, settings, history) on task k, its history viewed as the kernel
@@ -130,7 +145,7 @@ private:
   template <class Step> auto in_kernel_view(int k, bool update_history, Step &&step);
   tri::SeparationCache separation_cache(const Task &task, bool update_history) {
     return {settings_.separation ? axis(task.atom, task.mesh) : nullptr, update_history,
-            task.candidates};
+            task.candidates, {}, task.kept};
   }
   // What the engine asks of this fix for task k (interaction_engine.h: the host).
   struct EngineHost {

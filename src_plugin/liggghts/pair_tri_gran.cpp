@@ -33,10 +33,6 @@ PairTriGran::PairTriGran(LAMMPS *lmp) : PairGran(lmp) {
 
 void PairTriGran::settings(int narg, char **arg) {
   for (int i = 0; i < narg;) {
-    if (std::string(arg[i]) == "keep_contacts") {
-      parse_keep_contacts(narg, arg, &i);
-      continue;
-    }
     if (!tri_liggghts::parse_contact_keyword(narg, arg, &i, settings_, kStyle, error)) {
       std::string msg =
           tri_liggghts::gran_submodel_message(kStyle, arg[i], i + 1 < narg ? arg[i + 1] : nullptr);
@@ -58,21 +54,6 @@ void PairTriGran::settings(int narg, char **arg) {
     for (int k = 0; k < 3; ++k)
       add_history_value("tri_axis_" + std::to_string(k), "1");
   }
-}
-
-// keep_contacts T|no: carry a pair's contact points while the bodies move less than T times
-// their layer relative to each other (kept_contacts.h); no: measure every contact every step.
-void PairTriGran::parse_keep_contacts(int narg, char **arg, int *i) {
-  if (*i + 1 >= narg)
-    error->all(FLERR, "Pair tri/gran: missing value after 'keep_contacts'");
-  const std::string v = arg[*i + 1];
-  char *end = nullptr;
-  const double t = v == "no" || v == "off" ? 0.0 : std::strtod(v.c_str(), &end);
-  if (end && (*end != '\0' || !(t > 0.0) || !(t <= 1e-2)))
-    error->all(FLERR, ("Pair tri/gran: 'keep_contacts' expects no or a tolerance in (0, 0.01] "
-                       "times the combined soft layer, got '" + v + "'").c_str());
-  settings_.interaction.kept_tolerance = t;
-  *i += 2;
 }
 
 void PairTriGran::init_style() {

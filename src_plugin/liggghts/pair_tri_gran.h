@@ -5,7 +5,7 @@
 // hooke/stiffness force law with friction; forces and torques go to both particles.
 //
 //   pair_style tri/gran [model hooke/stiffness|hooke|hertz] [contact keywords, see
-//                       contact_settings.h] [keep_contacts T|no]
+//                       contact_settings.h]
 //   pair_coeff * *
 //
 // The material (material_table.h) is read in init_style, before LIGGGHTS sizes the neighbour
@@ -108,7 +108,6 @@ private:
   // Whether the task's kept contact points hold this step (tri::kept_contacts_hold, from the
   // poses): then its atoms' world-frame triangles are not needed.
   bool carries_kept_contacts(const Task &task);
-  void parse_keep_contacts(int narg, char **arg, int *i);
   void find_kept_contacts();
   std::uint64_t kept_key(int i, int j) const;
   // What the engine asks of this style for task k (interaction_engine.h: the host).

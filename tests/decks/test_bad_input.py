@@ -104,8 +104,9 @@ BAD_CONTACT = {
     "pair_bad_keep_contacts": ({"pairstyle": "tri/gran keep_contacts 0.5"},
                                r"Pair tri/gran: 'keep_contacts' expects no or a tolerance in "
                                r"\(0, 0.01\] times the combined soft layer, got '0.5'"),
-    "wall_keep_contacts": ({"wall": "fix walls all tri/wall mesh cad keep_contacts 1e-4"},
-                           r"tri/wall: 'keep_contacts' is a keyword of pair tri/gran"),
+    "wall_bad_keep_contacts": ({"wall": "fix walls all tri/wall mesh cad keep_contacts yes"},
+                               r"tri/wall: 'keep_contacts' expects no or a tolerance in "
+                               r"\(0, 0.01\] times the combined soft layer, got 'yes'"),
     "pair_newton_on": ({"newton": "on off"},
                        r"Pair granular with shear history requires newton pair off"),
 }

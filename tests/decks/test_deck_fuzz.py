@@ -103,6 +103,7 @@ def contact_keywords(d):
         lambda: "cull " + d.word("yes", "boxes", "no"),
         lambda: "separation " + d.word("yes", "no"),
         lambda: "coherence " + (d.value(0.01, 0.5) if d.maybe() else "no"),
+        lambda: "keep_contacts " + (d.value(1e-5, 1e-3) if d.maybe() else "no"),
         lambda: "reduction " + d.word("clusters", "paper", "none"),
         lambda: "tangential " + d.word("history", "no_history"),
         lambda: "absolute_damping " + d.word("on", "off"),
@@ -151,8 +152,7 @@ def deck(rng):
     lines.append(particles_fix(d, types))
     model = d.rng.choice(["hooke/stiffness", "hooke", "hertz"])
     lines.append(material(d, model, types))
-    keep = f" keep_contacts {d.value(1e-5, 1e-3) if d.maybe() else 'no'}" if d.maybe() else ""
-    lines.append(f"pair_style tri/gran model {model} {contact_keywords(d)}{keep}".rstrip())
+    lines.append(f"pair_style tri/gran model {model} {contact_keywords(d)}".rstrip())
     lines.append("pair_coeff * *")
     lines.append("fix floor all mesh/surface file floor.stl type 1")
     wall = "fix walls all tri/wall mesh floor"

@@ -150,6 +150,35 @@ TEST(KeptContacts, WhatIsNotKept) {
   EXPECT_FALSE(contacts_kept(kept.data()));
 }
 
+// A wall patch's points name its triangle by id: carried to a patch that lists the triangles
+// differently, the point names the same triangle; a patch without it does not hold them. The
+// wall (radius 0, the world's frame) bounds the motion by the particle's own.
+TEST(KeptContacts, WallTrianglesByIdAndTheParticlesMotion) {
+  const RigidPose particle = pose(Vector3d(0.001, 0.0, 0.002), Quaterniond::Identity());
+  RigidPose wall; // Body's default for a wall: the world's frame, radius 0
+  std::vector<double> kept = kept_record();
+  ContactPoint c = face_point();
+  c.tri_b = 1;
+  const int then_ids[3] = {10, 20, 30};
+  keep_contacts(particle, wall, {c}, kept.data(), then_ids);
+  const int now_ids[2] = {5, 20}, gone[2] = {5, 30};
+  EXPECT_TRUE(kept_triangles_present(kept.data(), now_ids, 2));
+  EXPECT_FALSE(kept_triangles_present(kept.data(), gone, 2));
+  std::vector<ContactPoint> out;
+  carry_kept_contacts(kept.data(), particle, wall, out, now_ids, 2);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].tri_b, 1); // id 20 is second now too
+  const int reordered[3] = {20, 5, 7};
+  carry_kept_contacts(kept.data(), particle, wall, out, reordered, 3);
+  EXPECT_EQ(out[0].tri_b, 0);
+  RigidPose moved = particle;
+  moved.x.x() += 3e-9;
+  EXPECT_NEAR(kept_contacts_motion(kept.data(), moved, wall), 3e-9, kLength);
+  moved.q = Quaterniond(Eigen::AngleAxisd(1e-6, Vector3d::UnitZ()));
+  EXPECT_NEAR(kept_contacts_motion(kept.data(), moved, wall),
+              3e-9 + 2 * std::sin(0.5e-6) * particle.radius, kLength);
+}
+
 namespace {
 
 // Two rocks on a path of small steps, evaluated with kept contact points and measured afresh

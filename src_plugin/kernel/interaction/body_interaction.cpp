@@ -288,7 +288,8 @@ void update_separation_cache(const Body &a, const Body &b, const InteractionSett
 
 // Whether a measurement of this pair keeps its points for the next step (kept_contacts.h).
 bool keeps_contacts(const Body &b, const InteractionSettings &s, const SeparationCache &cache) {
-  return cache.kept_contacts && cache.update && s.kept_tolerance > 0.0 && !b.is_wall();
+  return cache.kept_contacts && cache.update && s.kept_tolerance > 0.0 &&
+         (!b.is_wall() || b.triangle_ids);
 }
 
 // How the pair's triangle contacts become contact points (contact_reduction.h).
@@ -355,7 +356,7 @@ PairForceResult forces_from_contacts(const Body &a, const Body &b, const Interac
   if (params.keep_shallow)
     ball_contacts(ball_side(a), ball_side(b), scratch.points);
   if (keep)
-    keep_contacts(a.pose, b.pose, scratch.points, cache.kept_contacts);
+    keep_contacts(a.pose, b.pose, scratch.points, cache.kept_contacts, b.triangle_ids);
   PairForceResult r = pair_contact_force(scratch.points, a.state, b.state, s.coefficients, dt,
                                          history,
                                          scratch.record_contacts ? &scratch.records : nullptr);
@@ -456,17 +457,22 @@ PairPlan plan_search(const Body &a, const Body &b, const InteractionSettings &s,
 
 bool kept_contacts_hold(const Body &a, const Body &b, const InteractionSettings &s,
                         const SeparationCache &cache) {
-  if (!cache.kept_contacts || !(s.kept_tolerance > 0.0) || b.is_wall() || a.is_wall())
+  if (!cache.kept_contacts || !(s.kept_tolerance > 0.0) || a.is_wall() ||
+      (b.is_wall() && !b.triangle_ids))
     return false;
-  return kept_contacts_motion(cache.kept_contacts, a.pose, b.pose) <=
-         s.kept_tolerance * (a.epsilon + b.epsilon);
+  if (kept_contacts_motion(cache.kept_contacts, a.pose, b.pose) >
+      s.kept_tolerance * (a.epsilon + b.epsilon))
+    return false;
+  return !b.triangle_ids || kept_triangles_present(cache.kept_contacts, b.triangle_ids,
+                                                   b.triangles->num_triangles());
 }
 
 PairForceResult carried_contacts_result(const Body &a, const Body &b, const InteractionSettings &s,
                                         double dt, double *history, InteractionScratch &scratch,
                                         ContactStats &stats, const SeparationCache &cache) {
   ++stats.contacts_carried;
-  carry_kept_contacts(cache.kept_contacts, a.pose, b.pose, scratch.points);
+  carry_kept_contacts(cache.kept_contacts, a.pose, b.pose, scratch.points, b.triangle_ids,
+                      b.triangle_ids ? b.triangles->num_triangles() : 0);
   PairForceResult r = pair_contact_force(scratch.points, a.state, b.state, s.coefficients, dt,
                                          history,
                                          scratch.record_contacts ? &scratch.records : nullptr);

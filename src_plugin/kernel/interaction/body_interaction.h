@@ -93,6 +93,9 @@ struct Body {
   const SurfaceSphere *spheres = nullptr;
   double ball_lift = 0.0; // m, Shape::ball_lift
   bool convex = true;     // Shape::convex (a wall: unused)
+  // A wall patch whose points may be kept (kept_contacts.h: a static mesh): each triangle's id
+  // in its mesh, in `triangles`' order; null otherwise (a particle, a moving wall).
+  const int *triangle_ids = nullptr;
   BodyState state;                        // mass <= 0 for a wall
   RigidPose pose; // a particle: x, orientation and bounding radius of `triangles`; unused for a wall
   // A particle: its body-frame triangles (those `pose` places; pose.frame points at them), so
@@ -172,8 +175,9 @@ bool apart_needs_nothing(const double *stored_history);
 PairForceResult apart_result(ContactStats &stats);
 
 // Whether the pair's kept contact points (SeparationCache::kept_contacts) are carried this step
-// rather than measured: two particles whose relative motion since the points were kept is
-// within s.kept_tolerance of their layer (kept_contacts.h). Reads the bodies' poses only, never
+// rather than measured: two particles, or a particle and a static wall patch (one with
+// triangle_ids, whose kept triangles it still holds), whose relative motion since the points
+// were kept is within s.kept_tolerance of their layer (kept_contacts.h). Reads the bodies' poses only, never
 // their triangles, so a host asks before it builds them; plan_body_pair then carries them.
 bool kept_contacts_hold(const Body &a, const Body &b, const InteractionSettings &s,
                         const SeparationCache &cache);

@@ -34,8 +34,8 @@ static_assert(kPointEnd == kKeptContactPointDoubles, "kept point layout");
 // Triangle indices below 2^24 (a mesh of 16 million triangles), -1 included; kinds below 8:
 // the sum stays below 2^53, so the double holds it exactly.
 constexpr double kLabelBase = 33554432.0; // 2^25
-double pack_labels(const ContactPoint &c) {
-  return (c.tri_a + 1) + kLabelBase * ((c.tri_b + 1) + kLabelBase * static_cast<int>(c.kind));
+double pack_labels(const ContactPoint &c, int tri_b) {
+  return (c.tri_a + 1) + kLabelBase * ((tri_b + 1) + kLabelBase * static_cast<int>(c.kind));
 }
 void unpack_labels(double v, ContactPoint &c) {
   const auto packed = static_cast<long long>(v);
@@ -61,7 +61,7 @@ RelativePose read_relative(const double *kept) {
 }
 
 void write_point(const ContactPoint &c, const Matrix3d &to_a, const Vector3d &origin,
-                 double *out) {
+                 const int *ids_b, double *out) {
   const Vector3d p = to_a * (c.point - origin), n = to_a * c.normal,
                  d = to_a * (c.damping_point - origin);
   const Matrix3d m = to_a * c.patch_second_moment * to_a.transpose();
@@ -74,7 +74,7 @@ void write_point(const ContactPoint &c, const Matrix3d &to_a, const Vector3d &or
   out[kEnergyOverlap] = c.energy_overlap;
   out[kMinDistance] = c.min_distance;
   out[kMerged] = c.num_merged;
-  out[kLabels] = pack_labels(c);
+  out[kLabels] = pack_labels(c, ids_b && c.tri_b >= 0 ? ids_b[c.tri_b] : c.tri_b);
   out[kArea] = c.patch_area;
   out[kMeanRadius] = c.patch_mean_radius;
   out[kFaceWeight] = c.face_weight;
@@ -131,7 +131,7 @@ ContactPoint carry_point(const double *in, const RelativeMotion &m, const Matrix
 void clear_kept_contacts(double *kept) { std::fill(kept, kept + kKeptContactDoubles, 0.0); }
 
 void keep_contacts(const RigidPose &a, const RigidPose &b, const std::vector<ContactPoint> &points,
-                   double *kept) {
+                   double *kept, const int *ids_b) {
   const int n = static_cast<int>(points.size());
   const bool keepable =
       n > 0 && n <= kKeptContactPoints &&
@@ -155,23 +155,32 @@ void keep_contacts(const RigidPose &a, const RigidPose &b, const std::vector<Con
   for (int k = 0; k < kKeptContactPoints; ++k) {
     double *out = kept + kKeptContactHeader + k * kKeptContactPointDoubles;
     if (k < n)
-      write_point(points[k], to_a, a.x, out);
+      write_point(points[k], to_a, a.x, ids_b, out);
     else
       std::fill_n(out, kKeptContactPointDoubles, 0.0);
   }
 }
 
 double kept_contacts_motion(const double *kept, const RigidPose &a, const RigidPose &b) {
-  if (!contacts_kept(kept) || !(b.radius > 0.0))
+  if (!contacts_kept(kept))
     return std::numeric_limits<double>::infinity();
   const RelativePose then = read_relative(kept), now = relative_pose(a, b);
-  const double turned = 2.0 * (now.r * then.r.conjugate()).vec().norm() * b.radius;
-  const double d = (now.t - then.t).norm() + turned;
+  const Quaterniond turn = now.r * then.r.conjugate();
+  const double chord = 2.0 * turn.vec().norm(); // 2 sin(theta / 2)
+  // b's vertices seen from a, or a's seen from b (a's centre in b's frame: -r^-1 t): either
+  // bounds every relative displacement; a wall (radius 0, its frame the world's) only the second.
+  double d = std::numeric_limits<double>::infinity();
+  if (b.radius > 0.0)
+    d = (now.t - then.t).norm() + chord * b.radius;
+  if (a.radius > 0.0) {
+    const Vector3d a_now = -(now.r.conjugate() * now.t), a_then = -(then.r.conjugate() * then.t);
+    d = std::min(d, (a_now - a_then).norm() + chord * a.radius);
+  }
   return std::isfinite(d) ? d : std::numeric_limits<double>::infinity();
 }
 
 void carry_kept_contacts(const double *kept, const RigidPose &a, const RigidPose &b,
-                         std::vector<ContactPoint> &points) {
+                         std::vector<ContactPoint> &points, const int *ids_b, int count_b) {
   points.clear();
   const int n = static_cast<int>(kept[0]);
   const RelativePose then = read_relative(kept), now = relative_pose(a, b);
@@ -183,9 +192,25 @@ void carry_kept_contacts(const double *kept, const RigidPose &a, const RigidPose
   m.moved.linear() = m.turn;
   m.moved.translation() = now.t - m.turn * then.t;
   const Matrix3d to_world = Quaterniond(a.q).toRotationMatrix();
-  for (int k = 0; k < n; ++k)
+  for (int k = 0; k < n; ++k) {
     points.push_back(
         carry_point(kept + kKeptContactHeader + k * kKeptContactPointDoubles, m, to_world, a.x));
+    if (ids_b) { // back from the kept id to b's index now
+      const int id = points.back().tri_b;
+      points.back().tri_b = static_cast<int>(std::find(ids_b, ids_b + count_b, id) - ids_b);
+    }
+  }
+}
+
+bool kept_triangles_present(const double *kept, const int *ids_b, int count_b) {
+  const int n = static_cast<int>(kept[0]);
+  for (int k = 0; k < n; ++k) {
+    ContactPoint c;
+    unpack_labels(kept[kKeptContactHeader + k * kKeptContactPointDoubles + kLabels], c);
+    if (c.tri_b >= 0 && std::find(ids_b, ids_b + count_b, c.tri_b) == ids_b + count_b)
+      return false;
+  }
+  return true;
 }
 
 } // namespace tri

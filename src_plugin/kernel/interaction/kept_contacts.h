@@ -15,10 +15,11 @@
 // a's along the normal; min_distance rises by as much. Kind, area, members and triangles are
 // kept.
 //
-// The bound. D is the largest displacement of a vertex of b seen from a's frame since the poses
+// The bound. D bounds the displacement of a vertex of b seen from a's frame since the poses
 // were kept: |t - t0| + 2 sin(theta / 2) r_b, (t, theta) b's relative translation and turn in
 // a's frame (rigid_pose.h, the same bound as candidate_cache.h's, but relative: a pile that
-// moves as one keeps its contacts). A measured overlap is a maximum (or smooth maximum) of
+// moves as one keeps its contacts), or the same for a's vertices seen from b, whichever is
+// smaller (the distance between two points changes by at most either). A measured overlap is a maximum (or smooth maximum) of
 // triangle-pair overlaps, each of which a motion D changes by at most D, and the update changes
 // the kept one by at most D, so a carried overlap is within about 2 D of a measured one (plus
 // the kernel's own tolerance, certified_tolerance). Points are kept only while D <= tau =
@@ -26,14 +27,16 @@
 // starts with an overlap below tau, inside the fade-in of contact_reduction.h step 5 (a taper of
 // 1e-3 of the layer), where its force is nearly zero.
 //
-// Where the points live. In the pair's LIGGGHTS history values (kKeptContactDoubles after the
-// friction history), so that they migrate with the atoms and are written to restart files: the
-// decision to carry or measure, and what is carried, are the same on any rank count, thread
-// count and after a restart. They are kept in the orientation (a, b) the kernel sees, which
-// hosts make canonical (lower tag first), so LIGGGHTS never flips their signs.
+// Where the points live: with the host, which moves them with the atoms and writes them to
+// restart files (pair tri/gran: fix tri/kept_contacts; fix tri/wall: its per-atom array), so
+// that the decision to carry or measure, and what is carried, are the same on any rank count,
+// thread count and after a restart. They are kept in the orientation (a, b) the kernel sees.
+//
+// A static wall patch is kept against the world frame (its pose the world's): only the
+// particle moves, and b's triangle of each point is kept by its id in the mesh.
 //
 // Not kept (measured every step): a pair with more than kKeptContactPoints points, one whose
-// surfaces intersect (a deep contact), a pair with a wall, or any pair when the tolerance is 0.
+// surfaces intersect (a deep contact), a moving wall, or any pair when the tolerance is 0.
 #pragma once
 
 #include "body/rigid_pose.h"
@@ -43,8 +46,6 @@
 
 namespace tri {
 
-// LIGGGHTS 3.8 holds at most 99 history values per pair (PairGran::init_style writes their
-// count into 3 characters); the friction history and the axis take 43.
 constexpr int kKeptContactPoints = 2;
 constexpr int kKeptContactHeader = 8;        // count, b's position and turn seen from a
 constexpr int kKeptContactPointDoubles = 23; // one ContactPoint (kept_contacts.cpp)
@@ -60,16 +61,24 @@ inline bool contacts_kept(const double *kept) { return kept && kept[0] != 0.0; }
 
 // Keeps `points`, measured at the poses a and b, or clears `kept` where they cannot be kept
 // (header).
+// `ids_b` (a wall patch: each triangle's id in its mesh; null for a particle): b's triangle of
+// each point is kept by id, since a patch's triangles change as the particle moves.
 void keep_contacts(const RigidPose &a, const RigidPose &b, const std::vector<ContactPoint> &points,
-                   double *kept);
+                   double *kept, const int *ids_b = nullptr);
 void clear_kept_contacts(double *kept);
 
-// The relative motion D since the poses were kept (header), m; infinity without kept points or
-// for poses of other shapes.
+// The relative motion D since the poses were kept (header), m; infinity without kept points.
+// The smaller of two bounds: b's vertices seen from a (radius of b), a's seen from b (radius
+// of a); a static wall, whose pose is the world's with radius 0, takes the second.
 double kept_contacts_motion(const double *kept, const RigidPose &a, const RigidPose &b);
 
 // The kept points carried to the poses a and b (header), into `points`.
+// With `ids_b` (count_b ids, as for keep_contacts), each point's tri_b is the index of its kept
+// id among them (count_b where it is not: see kept_triangles_present).
 void carry_kept_contacts(const double *kept, const RigidPose &a, const RigidPose &b,
-                         std::vector<ContactPoint> &points);
+                         std::vector<ContactPoint> &points, const int *ids_b = nullptr,
+                         int count_b = 0);
+// Whether the triangles of b that the kept points name are all still among ids_b.
+bool kept_triangles_present(const double *kept, const int *ids_b, int count_b);
 
 } // namespace tri
