@@ -184,7 +184,7 @@ void FixTriWall::collect_tasks() {
           std::fill(h, h + tri::kHistoryDoubles, 0.0);
         std::fill(axis(a, static_cast<int>(m)), axis(a, static_cast<int>(m)) + 3, 0.0);
         double *k = kept(a, static_cast<int>(m));
-        if (k && tri::contacts_kept(k))
+        if (k && tri::kept_state(k))
           tri::clear_kept_contacts(k);
         continue;
       }
@@ -283,7 +283,7 @@ tri::PairPlan FixTriWall::EngineHost::plan(std::size_t k, int thread,
   const Task &task = fix.tasks_[k];
   if (task.apart &&
       tri::apart_needs_nothing(fix.history_[task.atom] + task.mesh * tri::kHistoryDoubles) &&
-      !tri::contacts_kept(task.kept))
+      !tri::kept_state(task.kept))
     return tri::apart_result(stats);
   // The particle's world-frame triangles, unless apart or carried (both read its pose alone).
   const bool carried = !task.apart && fix.carries_kept_contacts(task);
@@ -298,7 +298,7 @@ tri::PairPlan FixTriWall::EngineHost::plan(std::size_t k, int thread,
           return tri::carried_contacts_result(particle, wall, s, dt, history, scratch, stats,
                                               cache);
         if (task.apart) {
-          if (update_history && tri::contacts_kept(task.kept))
+          if (update_history && tri::kept_state(task.kept))
             tri::clear_kept_contacts(task.kept);
           return tri::apart_result(particle, wall, s, dt, history, scratch, stats);
         }

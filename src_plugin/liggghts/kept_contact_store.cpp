@@ -20,7 +20,7 @@ double *KeptContactStore::entry(std::size_t slot, std::uint64_t key) {
   next_hints_[slot] = {key, r};
   if (r->step == step_)
     return nullptr; // another task's this step
-  if (r->step < step_ - 1 && tri::contacts_kept(r->values.data()))
+  if (r->step < step_ - 1 && tri::kept_state(r->values.data()))
     tri::clear_kept_contacts(r->values.data()); // not asked for last step: starts afresh
   r->step = step_;
   return r->values.data();

@@ -65,7 +65,9 @@ private:
     long long step = 0; // the last step a task asked for it
     std::array<double, tri::kKeptContactDoubles> values{};
   };
-  bool live(const Record &r) const { return r.step >= step_ - 1 && tri::contacts_kept(r.values.data()); }
+  bool live(const Record &r) const {
+    return r.step >= step_ - 1 && tri::kept_state(r.values.data());
+  }
   static void append(std::uint64_t key, const Record &r, std::vector<double> &parcel);
 
   std::unordered_map<std::uint64_t, Record> records_; // references stay valid as it grows

@@ -243,7 +243,7 @@ tri::PairPlan PairTriGran::EngineHost::plan(std::size_t k, int thread,
   style.prepare(task, update_history);
   if (k + kPrefetchAhead < style.tasks_.size())
     style.prefetch(style.tasks_[k + kPrefetchAhead]);
-  if (task.apart && tri::apart_needs_nothing(task.history) && !tri::contacts_kept(task.kept))
+  if (task.apart && tri::apart_needs_nothing(task.history) && !tri::kept_state(task.kept))
     return tri::apart_result(stats); // the axis stays as it is: its view would write it back
   // World-frame triangles as they are needed (a thread's recent ones): not for a pair apart or
   // one whose kept contact points are carried (both read the poses alone).
@@ -259,7 +259,7 @@ tri::PairPlan PairTriGran::EngineHost::plan(std::size_t k, int thread,
         if (carried)
           return tri::carried_contacts_result(a, b, s, dt, history, scratch, stats, cache);
         if (task.apart) {
-          if (update_history && tri::contacts_kept(task.kept))
+          if (update_history && tri::kept_state(task.kept))
             tri::clear_kept_contacts(task.kept);
           return tri::apart_result(a, b, s, dt, history, scratch, stats);
         }

@@ -337,13 +337,14 @@ PairForceResult forces_from_contacts(const Body &a, const Body &b, const Interac
   const bool keep = keeps_contacts(b, s, cache);
   if (!touching) { // the reduction of nothing needs no parameters
     scratch.points.clear();
-    if (keep && contacts_kept(cache.kept_contacts))
+    if (keep && kept_state(cache.kept_contacts))
       clear_kept_contacts(cache.kept_contacts);
     return pair_contact_force(scratch.points, a.state, b.state, s.coefficients, dt, history);
   }
-  // Kept points are classified whether or not this step records them: a record of a carried
-  // point must say what a measured one would.
-  const ReductionParams params = reduction_params(a, b, s, scratch.record_contacts || keep);
+  // Points to be kept are classified whether or not this step records them: a record of a
+  // carried point must say what a measured one would.
+  const bool keep_now = keep && keep_after_measuring(cache.kept_contacts);
+  const ReductionParams params = reduction_params(a, b, s, scratch.record_contacts || keep_now);
   reduce_kernel_results(pairs, tested, num_tested, contact_cutoff(a, b), *a.triangles, a.epsilon,
                         *b.triangles, b.epsilon, params, scratch.reduction, scratch.points);
   const double layer = a.epsilon + b.epsilon;
@@ -355,7 +356,7 @@ PairForceResult forces_from_contacts(const Body &a, const Body &b, const Interac
   place_between_given_surfaces(a.epsilon, b.epsilon, scratch.points);
   if (params.keep_shallow)
     ball_contacts(ball_side(a), ball_side(b), scratch.points);
-  if (keep)
+  if (keep_now)
     keep_contacts(a.pose, b.pose, scratch.points, cache.kept_contacts, b.triangle_ids);
   PairForceResult r = pair_contact_force(scratch.points, a.state, b.state, s.coefficients, dt,
                                          history,
@@ -471,6 +472,8 @@ PairForceResult carried_contacts_result(const Body &a, const Body &b, const Inte
                                         double dt, double *history, InteractionScratch &scratch,
                                         ContactStats &stats, const SeparationCache &cache) {
   ++stats.contacts_carried;
+  if (cache.update)
+    mark_carried(cache.kept_contacts);
   carry_kept_contacts(cache.kept_contacts, a.pose, b.pose, scratch.points, b.triangle_ids,
                       b.triangle_ids ? b.triangles->num_triangles() : 0);
   PairForceResult r = pair_contact_force(scratch.points, a.state, b.state, s.coefficients, dt,

@@ -130,6 +130,19 @@ ContactPoint carry_point(const double *in, const RelativeMotion &m, const Matrix
 
 void clear_kept_contacts(double *kept) { std::fill(kept, kept + kKeptContactDoubles, 0.0); }
 
+bool keep_after_measuring(double *kept) {
+  if (kept[0] < 0.0) { // skipping after a miss
+    kept[0] += 1.0;
+    return false;
+  }
+  if (kept[0] > 0.0 && kept[kKeptContactHeader - 1] == 0.0) { // kept, never carried: a miss
+    clear_kept_contacts(kept);
+    kept[0] = -kKeptSkipAfterMiss;
+    return false;
+  }
+  return true;
+}
+
 void keep_contacts(const RigidPose &a, const RigidPose &b, const std::vector<ContactPoint> &points,
                    double *kept, const int *ids_b) {
   const int n = static_cast<int>(points.size());
@@ -139,12 +152,13 @@ void keep_contacts(const RigidPose &a, const RigidPose &b, const std::vector<Con
         return c.intersecting || c.kind == ContactKind::deep || !std::isfinite(c.overlap);
       });
   if (!keepable) {
-    if (contacts_kept(kept))
+    if (kept_state(kept))
       clear_kept_contacts(kept);
     return;
   }
   const RelativePose rel = relative_pose(a, b);
   kept[0] = n;
+  kept[kKeptContactHeader - 1] = 0.0; // not carried yet
   for (int k = 0; k < 3; ++k)
     kept[1 + k] = rel.t[k];
   kept[4] = rel.r.w();

@@ -47,17 +47,31 @@
 namespace tri {
 
 constexpr int kKeptContactPoints = 2;
-constexpr int kKeptContactHeader = 8;        // count, b's position and turn seen from a
+constexpr int kKeptContactHeader = 9; // count, b's position and turn seen from a, carried since
 constexpr int kKeptContactPointDoubles = 23; // one ContactPoint (kept_contacts.cpp)
 constexpr int kKeptContactDoubles =
-    kKeptContactHeader + kKeptContactPoints * kKeptContactPointDoubles; // 54
+    kKeptContactHeader + kKeptContactPoints * kKeptContactPointDoubles; // 55
 
 // Default tau in units of the layer eps_a + eps_b: the distance kernel's certified tolerance
 // (1e-4 eps), so that a carried overlap is as exact as a measured one.
 constexpr double kKeptContactTolerance = 1e-4;
 
 // Whether `kept` (kKeptContactDoubles values) holds contact points.
-inline bool contacts_kept(const double *kept) { return kept && kept[0] != 0.0; }
+inline bool contacts_kept(const double *kept) { return kept && kept[0] > 0.0; }
+// Whether it holds anything (points, or the count of measurements that keep none: below); a
+// host moves such a record with its atoms and clears it when the pair parts.
+inline bool kept_state(const double *kept) { return kept && kept[0] != 0.0; }
+
+// In a flowing bed a contact's kept points rarely hold until the next step, and keeping them
+// costs every measurement. So points kept and measured again without having been carried once
+// (a miss) are not kept for the next kKeptSkipAfterMiss measurements of the pair; a contact
+// that comes to rest is carried from at most that many steps later.
+constexpr int kKeptSkipAfterMiss = 4;
+// After a pair has been measured: whether to keep its points now (the record counts down a
+// skip, or notes a miss, where not).
+bool keep_after_measuring(double *kept);
+// A carried step: the kept points have been used (no miss when they next expire).
+inline void mark_carried(double *kept) { kept[kKeptContactHeader - 1] = 1.0; }
 
 // Keeps `points`, measured at the poses a and b, or clears `kept` where they cannot be kept
 // (header).
