@@ -149,7 +149,8 @@ void keep_contacts(const RigidPose &a, const RigidPose &b, const std::vector<Con
   const bool keepable =
       n > 0 && n <= kKeptContactPoints &&
       std::none_of(points.begin(), points.end(), [](const ContactPoint &c) {
-        return c.intersecting || c.kind == ContactKind::deep || !std::isfinite(c.overlap);
+        return c.intersecting || c.kind == ContactKind::deep || !std::isfinite(c.overlap) ||
+               c.patch_area > 0.0;
       });
   if (!keepable) {
     if (kept_state(kept))
