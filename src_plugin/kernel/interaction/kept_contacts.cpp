@@ -13,21 +13,17 @@ using Eigen::Matrix3d;
 using Eigen::Quaterniond;
 using Eigen::Vector3d;
 
-// Offsets of a kept point's values (kKeptContactPointDoubles of them), a's body frame.
+// Offsets of a kept point's values (kKeptContactPointDoubles of them), a's body frame. Only
+// points without a patch are kept (header), so the patch's fields are not.
 enum PointField {
   kPoint = 0,
   kNormal = 3,
-  kDamping = 6,
-  kOverlap = 9,
+  kOverlap = 6,
   kEnergyOverlap,
   kMinDistance,
   kMerged,
   kLabels, // tri_a, tri_b and kind in one exact integer (pack_labels)
-  kArea,
-  kMeanRadius,
-  kFaceWeight,
-  kMoment, // xx, xy, xz, yy, yz, zz
-  kPointEnd = kMoment + 6
+  kPointEnd
 };
 static_assert(kPointEnd == kKeptContactPointDoubles, "kept point layout");
 
@@ -62,42 +58,27 @@ RelativePose read_relative(const double *kept) {
 
 void write_point(const ContactPoint &c, const Matrix3d &to_a, const Vector3d &origin,
                  const int *ids_b, double *out) {
-  const Vector3d p = to_a * (c.point - origin), n = to_a * c.normal,
-                 d = to_a * (c.damping_point - origin);
-  const Matrix3d m = to_a * c.patch_second_moment * to_a.transpose();
+  const Vector3d p = to_a * (c.point - origin), n = to_a * c.normal;
   for (int k = 0; k < 3; ++k) {
     out[kPoint + k] = p[k];
     out[kNormal + k] = n[k];
-    out[kDamping + k] = d[k];
   }
   out[kOverlap] = c.overlap;
   out[kEnergyOverlap] = c.energy_overlap;
   out[kMinDistance] = c.min_distance;
   out[kMerged] = c.num_merged;
   out[kLabels] = pack_labels(c, ids_b && c.tri_b >= 0 ? ids_b[c.tri_b] : c.tri_b);
-  out[kArea] = c.patch_area;
-  out[kMeanRadius] = c.patch_mean_radius;
-  out[kFaceWeight] = c.face_weight;
-  const double moment[6] = {m(0, 0), m(0, 1), m(0, 2), m(1, 1), m(1, 2), m(2, 2)};
-  std::copy(moment, moment + 6, out + kMoment);
-}
-
-Matrix3d read_moment(const double *in) {
-  const double *m = in + kMoment;
-  Matrix3d out;
-  out << m[0], m[1], m[2], m[1], m[3], m[4], m[2], m[4], m[5];
-  return out;
 }
 
 // b's motion relative to a since the points were kept, in a's frame: `turn`, and `moved`, where
-// b's material at a point of a's frame is now; `half` the mean of a's (none) and b's turn.
+// b's material at a point of a's frame is now.
 struct RelativeMotion {
-  Matrix3d turn, half;
+  Matrix3d turn;
   Eigen::Isometry3d moved;
 };
 
 // A kept point carried by that motion into a's frame, then placed in the world by a's pose
-// (`to_world`, `origin`). The patch's moments and dashpot point only where there is a patch.
+// (`to_world`, `origin`). Without a patch, the dashpot acts at the point.
 ContactPoint carry_point(const double *in, const RelativeMotion &m, const Matrix3d &to_world,
                          const Vector3d &origin) {
   ContactPoint c;
@@ -106,23 +87,13 @@ ContactPoint carry_point(const double *in, const RelativeMotion &m, const Matrix
   const Vector3d n = (n0 + m.turn * n0).normalized();
   const double apart = (pb - p).dot(n);
   c.point = to_world * (0.5 * (p + pb)) + origin;
+  c.damping_point = c.point;
   c.normal = to_world * n;
   c.overlap = in[kOverlap] - apart;
   c.energy_overlap = in[kEnergyOverlap] - apart;
   c.min_distance = std::max(0.0, in[kMinDistance] + apart);
   c.num_merged = static_cast<int>(in[kMerged]);
   unpack_labels(in[kLabels], c);
-  c.patch_area = in[kArea];
-  c.patch_mean_radius = in[kMeanRadius];
-  c.face_weight = in[kFaceWeight];
-  if (c.patch_area > 0.0) {
-    const Vector3d d(in + kDamping);
-    c.damping_point = to_world * (0.5 * (d + m.moved * d)) + origin;
-    const Matrix3d place = to_world * m.half;
-    c.patch_second_moment = place * read_moment(in) * place.transpose();
-  } else {
-    c.damping_point = c.point;
-  }
   return c;
 }
 
@@ -203,7 +174,6 @@ void carry_kept_contacts(const double *kept, const RigidPose &a, const RigidPose
   // now at turn_now of that plus t_now.
   RelativeMotion m;
   m.turn = (now.r * then.r.conjugate()).normalized().toRotationMatrix();
-  m.half = 0.5 * (Matrix3d::Identity() + m.turn);
   m.moved.linear() = m.turn;
   m.moved.translation() = now.t - m.turn * then.t;
   const Matrix3d to_world = Quaterniond(a.q).toRotationMatrix();

@@ -10,10 +10,9 @@
 // The update. The points are kept in a's body frame, with b's pose seen from a. Carried, each
 // point p stays where a's material was and goes where b's is now, p_b; the point (and the
 // dashpot's point) becomes their midpoint, the normal the normalised mean of the kept normal
-// and its turn with b, the patch's moments turn with the mean of both, and the overlap (and the
-// energy overlap) falls by (p_b - p) . n: how far b's material at the point has moved away from
-// a's along the normal; min_distance rises by as much. Kind, area, members and triangles are
-// kept.
+// and its turn with b, and the overlap (and the energy overlap) falls by (p_b - p) . n: how far
+// b's material at the point has moved away from a's along the normal; min_distance rises by as
+// much. Kind, members and triangles are kept; kept points have no patch (below).
 //
 // The bound. D bounds the displacement of a vertex of b seen from a's frame since the poses
 // were kept: |t - t0| + 2 sin(theta / 2) r_b, (t, theta) b's relative translation and turn in
@@ -53,9 +52,9 @@ namespace tri {
 
 constexpr int kKeptContactPoints = 2;
 constexpr int kKeptContactHeader = 9; // count, b's position and turn seen from a, carried since
-constexpr int kKeptContactPointDoubles = 23; // one ContactPoint (kept_contacts.cpp)
+constexpr int kKeptContactPointDoubles = 11; // one ContactPoint without a patch (kept_contacts.cpp)
 constexpr int kKeptContactDoubles =
-    kKeptContactHeader + kKeptContactPoints * kKeptContactPointDoubles; // 55
+    kKeptContactHeader + kKeptContactPoints * kKeptContactPointDoubles; // 31
 
 // Default tau in units of the layer eps_a + eps_b: the distance kernel's certified tolerance
 // (1e-4 eps), so that a carried overlap is as exact as a measured one.
