@@ -96,31 +96,57 @@ const std::vector<double> &FixTriKeptContacts::restart_parcel(int i) {
   return restart_parcels_[i];
 }
 
+// An atom's restart record: its length, then (where it has parcels) the record layout,
+// tri::kKeptContactDoubles, and the parcels. Parcels of another layout are not read.
+namespace {
+int restart_size(const std::vector<double> &parcels) {
+  return parcels.empty() ? 1 : static_cast<int>(parcels.size()) + 2;
+}
+} // namespace
+
 int FixTriKeptContacts::pack_restart(int i, double *buf) {
   const std::vector<double> &p = restart_parcel(i);
-  buf[0] = static_cast<double>(p.size()) + 1;
-  std::copy(p.begin(), p.end(), buf + 1);
-  return static_cast<int>(p.size()) + 1;
+  buf[0] = restart_size(p);
+  if (!p.empty()) {
+    buf[1] = tri::kKeptContactDoubles;
+    std::copy(p.begin(), p.end(), buf + 2);
+  }
+  return restart_size(p);
 }
 
 void FixTriKeptContacts::unpack_restart(int nlocal, int nth) {
   const double *record = tri_liggghts::restart_record(atom->extra, nlocal, nth);
   const int n = static_cast<int>(record[-1]) - 1;
-  if (n < 0 || n % tri_liggghts::KeptContactStore::kParcelDoubles != 0)
-    error->one(FLERR, "Fix tri/kept_contacts: the restart file's kept contacts do not match "
-                      "this build (written by another version)");
-  parcels_[nlocal].assign(record, record + n);
+  parcels_[nlocal].clear();
+  if (n <= 0)
+    return;
+  if (record[0] != tri::kKeptContactDoubles) { // another layout: the pair is measured afresh
+    other_layout_read_ = true;
+    return;
+  }
+  if ((n - 1) % tri_liggghts::KeptContactStore::kParcelDoubles != 0)
+    error->one(FLERR, "Fix tri/kept_contacts: the restart file's kept contacts are damaged "
+                      "(their length does not match their layout)");
+  parcels_[nlocal].assign(record + 1, record + n);
 }
 
-int FixTriKeptContacts::size_restart(int i) {
-  return static_cast<int>(restart_parcel(i).size()) + 1;
+void FixTriKeptContacts::setup_pre_exchange() {
+  int mine = other_layout_read_ ? 1 : 0, any = 0;
+  MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
+  if (any && comm->me == 0)
+    error->warning(FLERR, "Fix tri/kept_contacts: the restart file keeps contact points in "
+                          "another layout (another version): they are measured afresh");
+  other_layout_read_ = false;
+  pre_exchange();
 }
+
+int FixTriKeptContacts::size_restart(int i) { return restart_size(restart_parcel(i)); }
 
 int FixTriKeptContacts::maxsize_restart() {
   std::size_t most = 0;
   for (int i = 0; i < atom->nlocal; ++i)
     most = std::max(most, restart_parcel(i).size());
-  int local = static_cast<int>(most) + 1, all = 0;
+  int local = static_cast<int>(most) + 2, all = 0;
   MPI_Allreduce(&local, &all, 1, MPI_INT, MPI_MAX, world);
   return all;
 }

@@ -21,7 +21,7 @@ public:
   FixTriKeptContacts(class LAMMPS *, int, char **);
   ~FixTriKeptContacts() override;
   int setmask() override;
-  void setup_pre_exchange() override { pre_exchange(); }
+  void setup_pre_exchange() override;
   void pre_exchange() override;
   void setup_pre_neighbor() override { pre_neighbor(); }
   void pre_neighbor() override;
@@ -45,6 +45,7 @@ private:
   // A restart file's copy of the store, by local atom (the store stays as it is).
   std::vector<std::vector<double>> restart_parcels_;
   bigint restart_parcels_step_ = -1;
+  bool other_layout_read_ = false; // a restart file's parcels of another layout were dropped
   void parcel(std::vector<std::vector<double>> &out, bool drain);
   const std::vector<double> &restart_parcel(int i);
   int largest_exchange() const; // doubles, over the local atoms

@@ -457,11 +457,13 @@ int FixTriWall::pack_restart(int i, double *buf) {
 void FixTriWall::unpack_restart(int nlocal, int nth) {
   const double *record = tri_liggghts::restart_record(atom->extra, nlocal, nth);
   const int stored = static_cast<int>(record[-1]) - 1; // the record's length prefix
-  // Without kept contact points (written with keep_contacts no, or before they existed), or
-  // with them where this run keeps none: the history and axes are read, kept points start empty.
-  const int with_kept = values_without_kept_ +
-                        static_cast<int>(meshes_.size()) * tri::kKeptContactDoubles;
-  if (stored != values_without_kept_ && stored != with_kept) {
+  // Without kept contact points (written with keep_contacts no, or before they existed), with
+  // them where this run keeps none, or with points of the layout that held no patch (11 values
+  // a point, 31 a record): the history and axes are read, kept points start empty.
+  const int meshes = static_cast<int>(meshes_.size());
+  const int with_kept = values_without_kept_ + meshes * tri::kKeptContactDoubles;
+  const int with_point_only_kept = values_without_kept_ + meshes * 31;
+  if (stored != values_without_kept_ && stored != with_kept && stored != with_point_only_kept) {
     const std::string msg =
         std::string(kStyle) + ": the restart file holds " + std::to_string(stored) +
         " wall history values per particle, this build keeps " +
@@ -469,8 +471,9 @@ void FixTriWall::unpack_restart(int nlocal, int nth) {
         " per mesh): it was written by another version or with other meshes";
     error->one(FLERR, msg.c_str());
   }
+  const int read = stored == with_kept ? std::min(stored, values_per_atom_) : values_without_kept_;
   std::fill(history_[nlocal], history_[nlocal] + values_per_atom_, 0.0);
-  std::memcpy(history_[nlocal], record, std::min(stored, values_per_atom_) * sizeof(double));
+  std::memcpy(history_[nlocal], record, read * sizeof(double));
 }
 
 int FixTriWall::size_restart(int) { return values_per_atom_ + 1; }

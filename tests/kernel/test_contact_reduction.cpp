@@ -1186,6 +1186,44 @@ TEST(ContactReductionPoint, EdgeOrVertexContactHasNoPatch) {
   EXPECT_LE((points[0].patch_second_moment - want).norm(), 1e-6 * s4); // hybrid normal
 }
 
+// ContactPoint::point_is_material: a point at one place that goes with the bodies (a vertex
+// down; a face tilted by 2 degrees about a diagonal, whose one deepest corner pushes: a patch,
+// the deepest pair's law) against a point that slides (an edge down, at a clear angle or lying
+// within the polygons' 10 degrees, and a face lying flat, whose point is its centre of pressure).
+TEST(ContactReductionPoint, OnlyAPointAtOnePlaceGoesWithTheMaterial) {
+  const double gap = 0.4 * kLayer;
+  const Vector3d xy(0.2e-3, 0.1e-3, 0);
+  const Vector3d diagonal = Vector3d(1, 1, 0).normalized();
+  struct Case {
+    const char *what;
+    Matrix3d R;
+    bool material, patch;
+  };
+  const Case cases[] = {
+      {"vertex down",
+       (Eigen::AngleAxisd(0.6, Vector3d::UnitX()) * Eigen::AngleAxisd(0.4, Vector3d::UnitY()))
+           .toRotationMatrix(),
+       true, false},
+      {"face tilted about a diagonal", Eigen::AngleAxisd(0.035, diagonal).toRotationMatrix(), true,
+       true},
+      {"edge down, 29 degrees", Eigen::AngleAxisd(0.5, Vector3d::UnitY()).toRotationMatrix(), false,
+       false},
+      {"edge down, 2 degrees", Eigen::AngleAxisd(0.035, Vector3d::UnitY()).toRotationMatrix(),
+       false, true},
+      {"face lying flat", yaw(0.3), false, true}};
+  for (const Case &c : cases)
+    for (const int k : {1, 4}) {
+      Mesh a;
+      place_cube(a, k, xy, gap, c.R);
+      const Mesh b = plane(1.5 * kSide, 16);
+      const auto points = tri::reduce_contacts(contacts_by(2, a, b), soa_of(a), kEps, soa_of(b),
+                                               kEps, params_for(kSide / k, 3 * kSide / 16));
+      ASSERT_EQ(points.size(), 1u) << c.what;
+      EXPECT_EQ(points[0].point_is_material, c.material) << c.what << ", k " << k;
+      EXPECT_EQ(points[0].patch_area > 0.0, c.patch) << c.what << ", k " << k;
+    }
+}
+
 // A contact naming a triangle that the meshes do not have is a caller error, said as such.
 TEST(ContactReduction, TriangleIndexOutOfRangeThrows) {
   EXPECT_THROW(

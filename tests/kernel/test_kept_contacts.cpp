@@ -23,7 +23,7 @@ using Eigen::Vector3d;
 
 namespace {
 
-// A point-like contact (no patch: a face contact is not kept).
+// A point-like contact.
 ContactPoint edge_point() {
   ContactPoint c;
   c.point = Vector3d(0.001, 0.002, 0.0005);
@@ -70,7 +70,7 @@ TEST(KeptContacts, CarriedAtTheSamePosesAreTheKeptPoints) {
   ASSERT_EQ(out.size(), 1u);
   const ContactPoint &o = out[0];
   EXPECT_LT((o.point - c.point).norm(), kLength);
-  EXPECT_EQ(o.damping_point, o.point); // unused without a patch
+  EXPECT_EQ(o.damping_point, o.point); // without a patch, the dashpot acts at the point
   EXPECT_LT((o.normal - c.normal).norm(), 1e-15);
   EXPECT_NEAR(o.overlap, c.overlap, kLength);
   EXPECT_NEAR(o.energy_overlap, c.energy_overlap, kLength);
@@ -80,6 +80,22 @@ TEST(KeptContacts, CarriedAtTheSamePosesAreTheKeptPoints) {
   EXPECT_EQ(o.tri_b, 4);
   EXPECT_EQ(o.kind, ContactKind::edge);
   EXPECT_EQ(o.patch_area, 0.0);
+
+  ContactPoint face = c; // a tilted face's corner: its patch comes back, turned with the bodies
+  face.kind = ContactKind::face;
+  face.patch_area = 3e-6;
+  face.patch_mean_radius = 8e-4;
+  face.face_weight = 0.7;
+  face.patch_second_moment << 2e-12, 1e-13, -3e-13, 1e-13, 1e-12, 4e-13, -3e-13, 4e-13, 5e-14;
+  keep_contacts(a, b, {face}, kept.data());
+  carry_kept_contacts(kept.data(), a, b, out);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_LT((out[0].damping_point - face.damping_point).norm(), kLength);
+  EXPECT_EQ(out[0].patch_area, face.patch_area);
+  EXPECT_EQ(out[0].patch_mean_radius, face.patch_mean_radius);
+  EXPECT_EQ(out[0].face_weight, face.face_weight);
+  EXPECT_LT((out[0].patch_second_moment - face.patch_second_moment).norm(), 1e-27);
+  EXPECT_EQ(out[0].kind, ContactKind::face);
 }
 
 // b moved by s along the normal: the overlap falls by s, min_distance rises by s, the point
@@ -123,8 +139,9 @@ TEST(KeptContacts, RelativeTranslationAlongTheNormalAndCommonMotion) {
               kLength);
 }
 
-// More points than are kept, a contact through the intersection, or a face contact: the record
-// is cleared, and so is an old one; no record: the motion is unbounded.
+// More points than are kept, a contact through the intersection, or one whose point does not go
+// with the material: the record is cleared, and so is an old one; no record: the motion is
+// unbounded. A face contact whose point does is kept.
 TEST(KeptContacts, WhatIsNotKept) {
   const RigidPose a = pose(Vector3d::Zero(), Quaterniond::Identity());
   const RigidPose b = pose(Vector3d(0, 0, 0.004), Quaterniond::Identity());
@@ -142,12 +159,21 @@ TEST(KeptContacts, WhatIsNotKept) {
   EXPECT_FALSE(contacts_kept(kept.data()));
   keep_contacts(a, b, {}, kept.data());
   EXPECT_FALSE(contacts_kept(kept.data()));
-  ContactPoint face = c; // a face contact: its point follows micro-tilts the carry cannot
+  ContactPoint face = c; // a face lying flat: its point follows micro-tilts the carry cannot
   face.kind = ContactKind::face;
   face.patch_area = 2e-6;
+  face.point_is_material = false;
   keep_contacts(a, b, {c}, kept.data());
   keep_contacts(a, b, {c, face}, kept.data());
   EXPECT_FALSE(contacts_kept(kept.data()));
+  ContactPoint edge = c; // an edge lying flat: its point slides along it
+  edge.point_is_material = false;
+  keep_contacts(a, b, {c}, kept.data());
+  keep_contacts(a, b, {edge}, kept.data());
+  EXPECT_FALSE(contacts_kept(kept.data()));
+  face.point_is_material = true; // a tilted face pushing at its one deepest corner
+  keep_contacts(a, b, {face}, kept.data());
+  EXPECT_TRUE(contacts_kept(kept.data()));
 }
 
 // A wall patch's points name its triangle by id: carried to a patch that lists the triangles
@@ -202,6 +228,7 @@ double carried_share(int pair, const Path &path, int steps, const std::string &w
                         2 * certified_tolerance(carrying.distance, eps, eps) + 1e-12 * layer;
   long long in_contact = 0, carried = 0;
   double error_sum = 0.0, motion_sum = 0.0; // over the carried steps
+  double torque_error_max = 0.0;            // of |force| x a's radius
   for (int step = 0; step < steps; ++step) {
     double d, sweep, angle_a, angle_b;
     path(step, d, sweep, angle_a, angle_b);
@@ -224,14 +251,23 @@ double carried_share(int pair, const Path &path, int steps, const std::string &w
     if (st_got.contacts_carried > 0) {
       error_sum += std::abs(got.max_overlap - ref.max_overlap);
       motion_sum += motion;
+      const double lever = ref.force_a.norm() * a.pose.radius;
+      if (lever > 0.0)
+        torque_error_max =
+            std::max(torque_error_max, (got.torque_a - ref.torque_a).norm() / lever);
     }
   }
   EXPECT_GT(in_contact, steps / 2) << what;
   // The first-order update makes the typical error far below the bound (here at most 0.5 % of
   // the motion; with the overlap held instead of moved, 4 % to 94 %).
   const double relative = error_sum / std::max(motion_sum, 1e-300);
-  std::printf("%s: mean |carried - measured| %.3g of the motion\n", what.c_str(), relative);
+  std::printf("%s: mean |carried - measured| %.3g of the motion, torque within %.3g of force x "
+              "radius\n",
+              what.c_str(), relative, torque_error_max);
   EXPECT_LT(relative, 0.015) << what;
+  // The point goes with the material to within 200 motions (ContactPoint::point_is_material):
+  // 4 um here, 2e-3 of the radius, plus the overlap's share of the force.
+  EXPECT_LT(torque_error_max, 5e-3) << what;
   return in_contact ? double(carried) / double(in_contact) : 0.0;
 }
 

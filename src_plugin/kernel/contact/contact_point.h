@@ -36,6 +36,18 @@ struct ContactPoint {
   // The overlap whose 1/2 kn energy_overlap^2 is the contact's elastic energy (step 5b); equal
   // to `overlap` except for faces lying flat (there `overlap` is the force's, kn overlap).
   double energy_overlap = 0.0; // m
+  // Whether the force's point goes with the bodies' material at it: the deepest pair's law
+  // (step 5, or 5b with beta = 0 and no curved patch) at one place, every point that places it
+  // (the closest points or corners within the taper of the deepest) within a tenth of the layer
+  // of it (a vertex, two edges crossing, a tilted face's corner, an edge more than 0.6 degrees
+  // off flat). A motion d of the bodies changes those points' weights by 2 d / taper, so it moves
+  // the point against their material by at most 200 d (2 um for a layer of 0.1 mm and
+  // keep_contacts' default tolerance: a thousandth of a 4 mm particle's lever). Not so for a face
+  // lying flat or a curved patch (a centre of pressure) nor an edge lying flat (the middle of the
+  // closest points tied along it): their point slides across the patch or along the edge under
+  // tilts of micro-radians, and that slide is their restoring torque. Set by the reduction
+  // (contact_reduction.h steps 5, 5b).
+  bool point_is_material = true;
   ContactKind kind = ContactKind::vertex; // with ReductionParams::classify (else vertex)
 };
 

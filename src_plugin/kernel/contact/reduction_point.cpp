@@ -104,8 +104,10 @@ SmoothFound smooth_surface_peak(const ContactClass &cc, const Faces &faces) {
 // The kernel's deepest point and normal (steps 4 and 5) over the class's members (plain_only:
 // those not deeper than D, the members without a polygon): the members within the taper of D,
 // weighted by their height in it, and the overlap-weighted normal of those tied with D.
+// `placing` (if given) is extended by the points of the members that place the point.
 void kernel_deepest(const ContactClass &cc, double D, bool plain_only, double taper,
-                    const Vector3d &ref, Vector3d &point, Vector3d &normal) {
+                    const Vector3d &ref, Vector3d &point, Vector3d &normal,
+                    Eigen::AlignedBox3d *placing = nullptr) {
   const std::vector<Raw> &raw = cc.raw;
   const Raw &s = raw[cc.seed];
   Vector3d sum_n = Vector3d::Zero(), sum_p = Vector3d::Zero();
@@ -120,6 +122,8 @@ void kernel_deepest(const ContactClass &cc, double D, bool plain_only, double ta
     if (tied > 0.0) {
       sum_p += tied * r.point;
       sum_wp += tied;
+      if (placing)
+        placing->extend(r.point);
     }
     if (r.overlap >= D - kNormalDepthBand * cc.layer) {
       sum_n += r.overlap * r.normal;
@@ -150,16 +154,22 @@ void point_without_polygons(const ContactClass &cc, const SmoothFound &smooth,
   p.normal = sd.normal;
   p.overlap = sd.overlap * sd.normal_scale;
   p.energy_overlap = sd.overlap;
+  Eigen::AlignedBox3d placing = sd.placing;
   if (smooth.found && smooth.overlap > sd.overlap) {
     // No facet overlaps yet (or only at a clear angle): the smooth surfaces decide where they
     // reach past the facets, fully from a taper on.
     const double gain = smooth.overlap - sd.overlap;
     const double t = smoothstep(gain / taper);
+    if (t >= 1.0)
+      placing.setEmpty();
+    if (t > 0.0)
+      placing.extend(smooth.point);
     p.point += t * (smooth.point - p.point);
     p.normal = (p.normal + t * (smooth.normal - p.normal)).normalized();
     p.energy_overlap = smooth.overlap;
     p.overlap = smooth.overlap * ((1.0 - t) * sd.normal_scale + t);
   }
+  p.point_is_material = point_is_material(true, placing, p.point, layer);
 }
 
 // Step 5b: the polygons' sums, relative to the seed's midpoint (near the patch: no digits
@@ -168,6 +178,7 @@ void point_without_polygons(const ContactClass &cc, const SmoothFound &smooth,
 struct PolygonSums {
   double excess = 0.0;
   Vector3d excess1 = Vector3d::Zero(), excess_normal = Vector3d::Zero();
+  Eigen::AlignedBox3d excess_placing; // the corners above the level (they place p_D)
   double area = 0.0, weight = 0.0, weight2 = 0.0, facet_area = 0.0;
   Vector3d area1 = Vector3d::Zero(), pressure1 = Vector3d::Zero(), area_normal = Vector3d::Zero();
   Eigen::Matrix3d area2 = Eigen::Matrix3d::Zero();
@@ -195,6 +206,7 @@ PolygonSums sum_polygons(const std::vector<ContactPolygon> &polygons, std::size_
         if (w > 0.0) {
           corner_sum += w * (poly.corner_points[i] - origin);
           corner_weight += w;
+          t.excess_placing.extend(poly.corner_points[i]);
         }
       }
       if (corner_weight > 0.0) {
@@ -483,10 +495,12 @@ struct DeepestBlend {
   double D;
   Vector3d point, normal;
   double smooth_blend, plain_share;
+  Eigen::AlignedBox3d placing; // the points that place `point`
 };
 
 DeepestBlend deepest_blend(const ContactClass &cc, double D_poly, double deepest_plain,
                            const SmoothFound &smooth, const Vector3d &poly_deepest,
+                           const Eigen::AlignedBox3d &poly_placing,
                            const Vector3d &poly_deepest_normal, double beta, const Vector3d &ref) {
   const Raw &s = cc.raw[cc.seed];
   const double taper = kDeepestTaper * cc.layer;
@@ -507,6 +521,12 @@ DeepestBlend deepest_blend(const ContactClass &cc, double D_poly, double deepest
   Vector3d deepest = poly_deepest, deepest_normal;
   if (smooth_blend > 0.0)
     deepest += smooth_blend * (smooth_point - poly_deepest);
+  Eigen::AlignedBox3d placing;
+  if (plain_share < 1.0 && smooth_blend < 1.0)
+    placing = poly_placing.isEmpty() ? Eigen::AlignedBox3d(poly_deepest, poly_deepest)
+                                     : poly_placing;
+  if (plain_share < 1.0 && smooth_blend > 0.0)
+    placing.extend(smooth_point);
   {
     Vector3d kernel_point, kernel_normal;
     kernel_deepest(cc, s.overlap, false, taper, ref, kernel_point, kernel_normal);
@@ -517,14 +537,14 @@ DeepestBlend deepest_blend(const ContactClass &cc, double D_poly, double deepest
       deepest_normal += smooth_blend * (smooth_normal - deepest_normal);
     if (plain_share > 0.0) {
       Vector3d plain_point, plain_normal;
-      kernel_deepest(cc, deepest_plain, true, taper, ref, plain_point, plain_normal);
+      kernel_deepest(cc, deepest_plain, true, taper, ref, plain_point, plain_normal, &placing);
       D += plain_share * (deepest_plain - D_surface);
       deepest += plain_share * (plain_point - deepest);
       deepest_normal += plain_share * (plain_normal - deepest_normal);
     }
     deepest_normal.normalize();
   }
-  return {D, deepest, deepest_normal, smooth_blend, plain_share};
+  return {D, deepest, deepest_normal, smooth_blend, plain_share, placing};
 }
 
 // What a class's members give before a point is chosen: their contact polygons are
@@ -640,7 +660,7 @@ ContactPoint make_point(const ContactClass &cc, const Vector3d &ref, const Faces
   const double beta = flat.beta;
 
   const DeepestBlend blend = deepest_blend(cc, D_poly, deepest_plain, smooth, poly_deepest,
-                                           poly_deepest_normal, beta, ref);
+                                           sums.excess_placing, poly_deepest_normal, beta, ref);
   const double smooth_blend = blend.smooth_blend, plain_share = blend.plain_share, D = blend.D;
   const Vector3d &deepest = blend.point, &deepest_normal = blend.normal;
   p.point = deepest;
@@ -666,7 +686,9 @@ ContactPoint make_point(const ContactClass &cc, const Vector3d &ref, const Faces
   const CurvedPeak &curved = cp.curved;
   const Vector3d &curved_area_centre = cp.area_centre, &curved_pressure_centre = cp.pressure_centre,
                  &curved_second_centre = cp.second_centre, &curved_normal = cp.normal;
-  if ((beta > 0.0 || w > 0.0) && plain_share < 1.0)
+  const bool deepest_law = !((beta > 0.0 || w > 0.0) && plain_share < 1.0);
+  p.point_is_material = point_is_material(deepest_law, blend.placing, p.point, layer);
+  if (!deepest_law)
     energy_point(cc, sums, flat, {D, deepest, deepest_normal, poly_normal, plain_share},
                  {w, other_weights, facets_u, facet_scale, curved, curved_area_centre,
                   curved_pressure_centre, curved_second_centre, curved_normal},

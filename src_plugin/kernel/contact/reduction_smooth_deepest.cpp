@@ -101,6 +101,7 @@ SmoothDeepest smooth_deepest(const std::vector<Raw> &raw, const std::vector<int>
     SmoothDeepest out;
     out.overlap = D;
     out.point = d.point;
+    out.placing.extend(d.point);
     out.normal = finite(d.normal) ? d.normal : fallback_normal; // unit (raw_normal)
     return out;
   }
@@ -129,6 +130,7 @@ SmoothDeepest smooth_deepest(const std::vector<Raw> &raw, const std::vector<int>
   }
   // The deepest's own part of the gradient, split over the members tied with it by their
   // shares: each tied point gets an equal part, however many pairs see it.
+  SmoothDeepest out;
   double top_weight = 0.0;
   for (std::size_t k = 0; k < cands.size(); ++k)
     if (raw[cands[k]].overlap >= D - tie_band)
@@ -144,12 +146,12 @@ SmoothDeepest smooth_deepest(const std::vector<Raw> &raw, const std::vector<int>
     weights[k] = c_k;
     if (c_k == 0.0)
       continue;
+    out.placing.extend(d.point);
     sum_p += c_k * d.point;
     sum_c += c_k;
     if (finite(d.normal))
       sum_n += c_k * d.normal;
   }
-  SmoothDeepest out;
   out.overlap = D + taper * u * g;
   out.point = sum_c > 0.0 ? Vector3d(sum_p / sum_c) : fallback_point;
   const double len = sum_n.norm();

@@ -9,6 +9,7 @@
 #include "geometry/triangle_soa.h"
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>
@@ -123,7 +124,23 @@ ContactPoint make_point(const ContactClass &cc, const Vector3d &ref, const Faces
 struct SmoothDeepest {
   double overlap = 0.0, normal_scale = 1.0;
   Vector3d point, normal;
+  Eigen::AlignedBox3d placing; // the points of the members with a share of the point
 };
+
+// How far from `point` the points that place it (`placing`) may lie, m; 0 for none.
+inline double farthest_from(const Eigen::AlignedBox3d &placing, const Vector3d &point) {
+  if (placing.isEmpty())
+    return 0.0;
+  return (point - placing.min()).cwiseAbs().cwiseMax((point - placing.max()).cwiseAbs()).norm();
+}
+
+// ContactPoint::point_is_material: the deepest pair's law, placed by points within
+// kMaterialPointSpread of the layer of the point.
+constexpr double kMaterialPointSpread = 0.1;
+inline bool point_is_material(bool deepest_law, const Eigen::AlignedBox3d &placing,
+                              const Vector3d &point, double layer) {
+  return deepest_law && farthest_from(placing, point) <= kMaterialPointSpread * layer;
+}
 struct SmoothDeepestBands {
   double taper;      // m, the band below the deepest overlap that shares it
   double tie_band;   // m, overlaps closer than this are tied

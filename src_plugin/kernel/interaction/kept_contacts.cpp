@@ -13,8 +13,7 @@ using Eigen::Matrix3d;
 using Eigen::Quaterniond;
 using Eigen::Vector3d;
 
-// Offsets of a kept point's values (kKeptContactPointDoubles of them), a's body frame. Only
-// points without a patch are kept (header), so the patch's fields are not.
+// Offsets of a kept point's values (kKeptContactPointDoubles of them), a's body frame.
 enum PointField {
   kPoint = 0,
   kNormal = 3,
@@ -23,8 +22,27 @@ enum PointField {
   kMinDistance,
   kMerged,
   kLabels, // tri_a, tri_b and kind in one exact integer (pack_labels)
-  kPointEnd
+  kPatchArea,
+  kPatchMeanRadius,
+  kFaceWeight,
+  kDampingPoint,
+  kSecondMoment = kDampingPoint + 3, // xx, yy, zz, xy, xz, yz
+  kPointEnd = kSecondMoment + 6
 };
+
+void write_symmetric(const Matrix3d &m, double *out) {
+  out[0] = m(0, 0);
+  out[1] = m(1, 1);
+  out[2] = m(2, 2);
+  out[3] = m(0, 1);
+  out[4] = m(0, 2);
+  out[5] = m(1, 2);
+}
+Matrix3d read_symmetric(const double *in) {
+  Matrix3d m;
+  m << in[0], in[3], in[4], in[3], in[1], in[5], in[4], in[5], in[2];
+  return m;
+}
 static_assert(kPointEnd == kKeptContactPointDoubles, "kept point layout");
 
 // Triangle indices below 2^24 (a mesh of 16 million triangles), -1 included; kinds below 8:
@@ -59,10 +77,16 @@ RelativePose read_relative(const double *kept) {
 void write_point(const ContactPoint &c, const Matrix3d &to_a, const Vector3d &origin,
                  const int *ids_b, double *out) {
   const Vector3d p = to_a * (c.point - origin), n = to_a * c.normal;
+  const Vector3d d = c.patch_area > 0.0 ? Vector3d(to_a * (c.damping_point - origin)) : p;
   for (int k = 0; k < 3; ++k) {
     out[kPoint + k] = p[k];
     out[kNormal + k] = n[k];
+    out[kDampingPoint + k] = d[k];
   }
+  out[kPatchArea] = c.patch_area;
+  out[kPatchMeanRadius] = c.patch_mean_radius;
+  out[kFaceWeight] = c.face_weight;
+  write_symmetric(to_a * c.patch_second_moment * to_a.transpose(), out + kSecondMoment);
   out[kOverlap] = c.overlap;
   out[kEnergyOverlap] = c.energy_overlap;
   out[kMinDistance] = c.min_distance;
@@ -78,7 +102,8 @@ struct RelativeMotion {
 };
 
 // A kept point carried by that motion into a's frame, then placed in the world by a's pose
-// (`to_world`, `origin`). Without a patch, the dashpot acts at the point.
+// (`to_world`, `origin`). The dashpot's point goes as the point does: midway between where
+// a's and b's material at it went.
 ContactPoint carry_point(const double *in, const RelativeMotion &m, const Matrix3d &to_world,
                          const Vector3d &origin) {
   ContactPoint c;
@@ -86,8 +111,13 @@ ContactPoint carry_point(const double *in, const RelativeMotion &m, const Matrix
   const Vector3d pb = m.moved * p;
   const Vector3d n = (n0 + m.turn * n0).normalized();
   const double apart = (pb - p).dot(n);
+  const Vector3d d(in + kDampingPoint);
   c.point = to_world * (0.5 * (p + pb)) + origin;
-  c.damping_point = c.point;
+  c.damping_point = to_world * (0.5 * (d + m.moved * d)) + origin;
+  c.patch_area = in[kPatchArea];
+  c.patch_mean_radius = in[kPatchMeanRadius];
+  c.face_weight = in[kFaceWeight];
+  c.patch_second_moment = to_world * read_symmetric(in + kSecondMoment) * to_world.transpose();
   c.normal = to_world * n;
   c.overlap = in[kOverlap] - apart;
   c.energy_overlap = in[kEnergyOverlap] - apart;
@@ -121,7 +151,7 @@ void keep_contacts(const RigidPose &a, const RigidPose &b, const std::vector<Con
       n > 0 && n <= kKeptContactPoints &&
       std::none_of(points.begin(), points.end(), [](const ContactPoint &c) {
         return c.intersecting || c.kind == ContactKind::deep || !std::isfinite(c.overlap) ||
-               c.patch_area > 0.0;
+               !c.point_is_material;
       });
   if (!keepable) {
     if (kept_state(kept))

@@ -12,7 +12,8 @@
 // dashpot's point) becomes their midpoint, the normal the normalised mean of the kept normal
 // and its turn with b, and the overlap (and the energy overlap) falls by (p_b - p) . n: how far
 // b's material at the point has moved away from a's along the normal; min_distance rises by as
-// much. Kind, members and triangles are kept; kept points have no patch (below).
+// much. Kind, members, triangles and the patch's extent (area, mean radius, face weight, second
+// moment turned with a) are kept; the dashpot's point goes as the point does.
 //
 // The bound. D bounds the displacement of a vertex of b seen from a's frame since the poses
 // were kept: |t - t0| + 2 sin(theta / 2) r_b, (t, theta) b's relative translation and turn in
@@ -35,12 +36,14 @@
 // particle moves, and b's triangle of each point is kept by its id in the mesh.
 //
 // Not kept (measured every step): a pair with more than kKeptContactPoints points, one whose
-// surfaces intersect (a deep contact), a face contact (a point with a patch: contact_reduction.h
-// step 5b), a moving wall, or any pair when the tolerance is 0. A face's point is the centre of
-// its deepest region, which slides across the face under tilts of micro-radians: that slide is
-// the face's restoring torque. Carried, the point stood still within the tolerance, and cubes
-// at 97 % of the friction limit on an incline crept 1e-5 m where measured ones stay at rounding
-// (validation/contact/creep).
+// surfaces intersect (a deep contact), a contact whose point does not go with the bodies'
+// material (ContactPoint::point_is_material: a face lying flat, a curved patch, an edge lying
+// flat), a moving wall, or any pair when the tolerance is 0. Such a point slides across the
+// face or along the edge under tilts of micro-radians, and that slide is the contact's
+// restoring torque. Carried, it stood still within the tolerance, and cubes at 97 % of the
+// friction limit on an incline crept by 1e-5 m where measured ones stay at rounding
+// (validation/contact/creep). A vertex, edges crossing and a clearly tilted face's corner push
+// at one point that goes with the material, and are kept.
 #pragma once
 
 #include "body/rigid_pose.h"
@@ -52,9 +55,9 @@ namespace tri {
 
 constexpr int kKeptContactPoints = 2;
 constexpr int kKeptContactHeader = 9; // count, b's position and turn seen from a, carried since
-constexpr int kKeptContactPointDoubles = 11; // one ContactPoint without a patch (kept_contacts.cpp)
+constexpr int kKeptContactPointDoubles = 23; // one ContactPoint (kept_contacts.cpp)
 constexpr int kKeptContactDoubles =
-    kKeptContactHeader + kKeptContactPoints * kKeptContactPointDoubles; // 31
+    kKeptContactHeader + kKeptContactPoints * kKeptContactPointDoubles; // 55
 
 // Default tau in units of the layer eps_a + eps_b: the distance kernel's certified tolerance
 // (1e-4 eps), so that a carried overlap is as exact as a measured one.
