@@ -82,7 +82,10 @@ void CandidateStore::remove_from_index(const Entry *e) {
 void CandidateStore::end_step() {
   // Entries asked for are distinct and live; the others are dropped (none: the settled pile's
   // usual step). The sweep stops at the last one.
-  std::size_t to_drop = live_ - touched_;
+  std::size_t touched = 0;
+  for (const Lane &l : lanes_)
+    touched += l.touched;
+  std::size_t to_drop = live_ - touched;
   if (to_drop == 0)
     return;
   for (auto &chunk : chunks_)

@@ -5,11 +5,19 @@
 // it is dropped. Nothing here is written to restart files: a restarted run searches afresh,
 // with the same contacts (candidate_cache.h).
 //
-// Use: begin_step(); for each task, serially, entry(slot, key) (pointers stay valid while the
-// store grows: entries live in fixed chunks that never move); evaluate the tasks (threads may
-// use their own entries); end_step() drops what was not asked for. An entry is handed to one
-// task a step: a key asked for twice in one step (two images of one pair in a small periodic
-// box) gets null the second time, so no two tasks, on two threads, ever write one entry.
+// Use: begin_step(); for each task, entry(slot, key) (pointers stay valid while the store
+// grows: entries live in fixed chunks that never move); evaluate the tasks (threads may use
+// their own entries); end_step() drops what was not asked for. An entry is handed to one task a
+// step: a key asked for twice in one step (two images of one pair in a small periodic box) gets
+// null the second time, so no two tasks, on two threads, ever write one entry.
+//
+// Several threads may ask at once (pair tri/gran lists its neighbour rows on its threads) when
+// begin_step was given every slot and the number of lanes, each thread passes a lane of its own,
+// and all the asks for one key come from one thread, in slot order (a pair's key names the atom
+// whose neighbour list holds it, and a thread lists whole rows): then which task gets an entry
+// is the serial order's. A hint is read without a lock (an entry never moves, and a hinted one
+// keeps its key all step: only dropped entries are reused); the index is searched and grown
+// under the lock.
 //
 // `slot` is the task's index in the step's task list. Between neighbour-list rebuilds the list
 // is the same every step, so the entry a slot named last step is almost always the one it
@@ -27,9 +35,11 @@
 
 #include "distance/candidate_cache.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <vector>
 
 namespace tri_liggghts {
@@ -38,13 +48,14 @@ class CandidateStore {
 public:
   // `slots`: how many slots the host may name this step, if it knows (pair tri/gran: its
   // neighbour pairs, of which it asks for those within reach).
-  void begin_step(std::size_t slots = 0) {
+  // `lanes`: how many threads will ask at once (above).
+  void begin_step(std::size_t slots = 0, int lanes = 1) {
     ++step_;
-    touched_ = 0;
+    lanes_.assign(static_cast<std::size_t>(std::max(lanes, 1)), Lane{});
     hints_.swap(next_hints_);
     next_hints_.assign(slots, nullptr);
   }
-  tri::CandidateCache *entry(std::size_t slot, std::uint64_t key) {
+  tri::CandidateCache *entry(std::size_t slot, std::uint64_t key, int lane = 0) {
     // The hints of slots kHintAhead further are fetched now: a host asks for its slots in
     // order, and each entry (one per task, each on lines of its own) missed the cache. Two of
     // them: a host may skip slots (pairs out of reach), which have none.
@@ -52,8 +63,10 @@ public:
       if (ahead < hints_.size() && hints_[ahead])
         __builtin_prefetch(hints_[ahead]);
     Entry *e = slot < hints_.size() ? hints_[slot] : nullptr;
-    if (!e || e->key != key)
+    if (!e || e->key != key) {
+      std::lock_guard<std::mutex> lock(index_mutex_);
       e = find_or_add(key);
+    }
     // Slots come in order, one more each call: an inline push_back (a resize per slot is an
     // out-of-line fill call per task).
     if (slot < next_hints_.size()) {
@@ -64,7 +77,7 @@ public:
     }
     if (e->step == step_)
       return nullptr; // already another task's this step
-    ++touched_;
+    ++lanes_[static_cast<std::size_t>(lane)].touched;
     e->step = step_;
     return &e->cache;
   }
@@ -111,7 +124,11 @@ private:
   int index_shift_ = 64;                         // 64 - log2(index_.size())
   std::size_t live_ = 0;                         // entries in the index
   std::vector<Entry *> hints_, next_hints_;      // by slot: last step's entries, this step's
-  std::size_t touched_ = 0;                      // entries asked for this step
+  struct alignas(64) Lane {                      // one per asking thread, on lines of its own
+    std::size_t touched = 0;                     // entries it was handed this step
+  };
+  std::vector<Lane> lanes_{1};
+  std::mutex index_mutex_;                       // index_, chunks_ and free_ (entry's miss path)
   long long step_ = 0;
 };
 

@@ -12,9 +12,16 @@ void KeptContactStore::begin_step(std::size_t slots) {
 }
 
 double *KeptContactStore::entry(std::size_t slot, std::uint64_t key) {
+  // Each record is a node of its own, a miss per task: the one a few slots on is asked for now.
+  if (slot + kHintAhead < hints_.size() && hints_[slot + kHintAhead].second)
+    __builtin_prefetch(hints_[slot + kHintAhead].second);
   Record *r = slot < hints_.size() && hints_[slot].second && hints_[slot].first == key
                   ? hints_[slot].second
-                  : &records_[key];
+                  : nullptr;
+  if (!r) {
+    std::lock_guard<std::mutex> lock(records_mutex_);
+    r = &records_[key];
+  }
   if (slot >= next_hints_.size())
     next_hints_.resize(slot + 1, {0, nullptr});
   next_hints_[slot] = {key, r};

@@ -21,6 +21,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <mutex>
 #include <unordered_map>
 #include <vector>
 
@@ -43,7 +44,9 @@ public:
   // Once per force evaluation, before the tasks ask; `slots` as CandidateStore::begin_step.
   void begin_step(std::size_t slots);
   // The record of `key` for the task in `slot` (tri::kKeptContactDoubles values, all zero where
-  // none is kept); null if another task asked for it this step. Serial.
+  // none is kept); null if another task asked for it this step. Several threads may ask at once
+  // as they may of a CandidateStore (candidate_store.h): every slot sized by begin_step, all the
+  // asks for one key from one thread; a key not hinted is looked up under the lock.
   double *entry(std::size_t slot, std::uint64_t key);
 
   // A record as it travels with an atom: its key (as the bits of a double), then its values.
@@ -71,6 +74,8 @@ private:
   static void append(std::uint64_t key, const Record &r, std::vector<double> &parcel);
 
   std::unordered_map<std::uint64_t, Record> records_; // references stay valid as it grows
+  std::mutex records_mutex_;                          // records_ (entry's miss path)
+  static constexpr std::size_t kHintAhead = 8;        // entry(): the hint fetched this far ahead
   std::vector<std::pair<std::uint64_t, Record *>> hints_, next_hints_; // by slot
   long long step_ = 1;
 };

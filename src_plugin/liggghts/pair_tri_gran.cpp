@@ -18,6 +18,8 @@
 #include <cstdlib>
 #include <string>
 
+#include <omp.h>
+
 using namespace LAMMPS_NS;
 
 namespace {
@@ -93,25 +95,93 @@ void PairTriGran::find_kept_contacts() {
   kept_ = &static_cast<FixTriKeptContacts *>(modify->fix[f])->store();
 }
 
+// The step's tasks, in the order of the neighbour list. On several threads each lists a
+// contiguous run of rows (about as many neighbour pairs each) into a list of its own, and the
+// lists are then joined in row order: the same tasks, in the same order, as one thread lists.
+// Every ask of the stores for one pair's key comes from the thread that lists its row, so each
+// store hands its entries out as in the serial order (candidate_store.h).
 void PairTriGran::collect_tasks() {
+  const int inum = list->inum;
+  std::size_t neighbour_pairs = 0;
+  for (int ii = 0; ii < inum; ++ii)
+    neighbour_pairs += static_cast<std::size_t>(list->numneigh[list->ilist[ii]]);
+  const int threads = tri_liggghts::pair_loop_threads(settings_.loop, neighbour_pairs);
+  candidates_.begin_step(neighbour_pairs, threads);
+  if (kept_)
+    kept_->begin_step(neighbour_pairs);
+  tasks_.clear();
+  passed_.clear();
+  if (threads <= 1) {
+    collect_rows({0, inum, 0}, 0, tasks_, passed_);
+  } else {
+    if (static_cast<int>(row_lists_.size()) < threads)
+      row_lists_.resize(static_cast<std::size_t>(threads));
+    std::vector<RowRange> ranges = split_rows(neighbour_pairs, threads);
+#pragma omp parallel num_threads(threads)
+    {
+      const int t = omp_get_thread_num();
+      RowList &own = row_lists_[static_cast<std::size_t>(t)];
+      own.tasks.clear();
+      own.passed.clear();
+      collect_rows(ranges[static_cast<std::size_t>(t)], t, own.tasks, own.passed);
+#pragma omp barrier
+#pragma omp single
+      {
+        std::size_t tasks = 0, passed = 0;
+        for (int u = 0; u < threads; ++u) {
+          tasks += row_lists_[static_cast<std::size_t>(u)].tasks.size();
+          passed += row_lists_[static_cast<std::size_t>(u)].passed.size();
+        }
+        tasks_.resize(tasks);
+        passed_.resize(passed);
+      }
+      std::size_t task_offset = 0, passed_offset = 0;
+      for (int u = 0; u < t; ++u) {
+        task_offset += row_lists_[static_cast<std::size_t>(u)].tasks.size();
+        passed_offset += row_lists_[static_cast<std::size_t>(u)].passed.size();
+      }
+      std::copy(own.tasks.begin(), own.tasks.end(), tasks_.begin() + static_cast<long>(task_offset));
+      for (std::size_t p = 0; p < own.passed.size(); ++p) {
+        passed_[passed_offset + p] = own.passed[p];
+        passed_[passed_offset + p].before += task_offset;
+      }
+    }
+  }
+  candidates_.end_step();
+}
+
+// Rows [first, last) of the neighbour list in `threads` runs of about equal neighbour pairs.
+std::vector<PairTriGran::RowRange> PairTriGran::split_rows(std::size_t neighbour_pairs,
+                                                           int threads) const {
+  std::vector<RowRange> ranges(static_cast<std::size_t>(threads));
+  int ii = 0;
+  std::size_t slot = 0;
+  for (int t = 0; t < threads; ++t) {
+    const std::size_t until = neighbour_pairs * static_cast<std::size_t>(t + 1) /
+                              static_cast<std::size_t>(threads);
+    ranges[static_cast<std::size_t>(t)].first = ii;
+    ranges[static_cast<std::size_t>(t)].slot = slot;
+    for (; ii < list->inum && (slot < until || t == threads - 1); ++ii)
+      slot += static_cast<std::size_t>(list->numneigh[list->ilist[ii]]);
+    ranges[static_cast<std::size_t>(t)].last = ii;
+  }
+  return ranges;
+}
+
+// The tasks of neighbour rows [rows.first, rows.last), whose first pair is the stores' slot
+// rows.slot, appended to `tasks` and `passed` (`before` counting the tasks of `tasks`).
+void PairTriGran::collect_rows(RowRange rows, int lane, std::vector<Task> &tasks,
+                               std::vector<PassedPair> &passed) {
   double **first_history = listgranhistory ? listgranhistory->firstdouble : nullptr;
   int **first_touch = listgranhistory ? listgranhistory->firstneigh : nullptr;
   const int dnum = this->dnum();
   const bool tangential =
       settings_.interaction.coefficients.tangential == tri::TangentialModel::history;
   const bool coherent = settings_.interaction.coherence > 0.0;
-  tasks_.clear();
-  passed_.clear();
-  std::size_t neighbour_pairs = 0;
-  for (int ii = 0; ii < list->inum; ++ii)
-    neighbour_pairs += static_cast<std::size_t>(list->numneigh[list->ilist[ii]]);
-  candidates_.begin_step(neighbour_pairs);
-  if (kept_)
-    kept_->begin_step(neighbour_pairs);
-  // The store's hint slots: a pair's place in the neighbour list, which stays the same until the
+  // The stores' hint slots: a pair's place in the neighbour list, which stays the same until the
   // next rebuild (counting only the pairs within reach, every pair after one that came within
   // reach or left it named another's entry, and was looked up).
-  std::size_t slot = 0;
+  std::size_t slot = rows.slot;
   const double lift = particles_->largest_lift();
   const double cutoff =
       tri::particle_pair_cutoff(particles_->epsilon(), particles_->epsilon(), lift, lift);
@@ -120,10 +190,9 @@ void PairTriGran::collect_tasks() {
   double *const *const x = atom->x;
   const double *const radius = atom->radius;
   const tagint *const tag = atom->tag;
-  const int inum = list->inum;
   const int *const ilist = list->ilist, *const numneigh = list->numneigh;
   int *const *const firstneigh = list->firstneigh;
-  for (int ii = 0; ii < inum; ++ii) {
+  for (int ii = rows.first; ii < rows.last; ++ii) {
     const int i = ilist[ii];
     const int *jlist = firstneigh[i];
     const double xi = x[i][0], yi = x[i][1], zi = x[i][2], ri = radius[i];
@@ -146,8 +215,8 @@ void PairTriGran::collect_tasks() {
       double *history = values && tangential ? values : nullptr;
       double *axis = values && settings_.separation ? values + axis_offset_ : nullptr;
       tri::CandidateCache *candidates =
-          coherent ? candidates_.entry(slot,
-                                        tri_liggghts::CandidateStore::pair_key(tag[i], tag[j]))
+          coherent ? candidates_.entry(
+                         slot, tri_liggghts::CandidateStore::pair_key(tag[i], tag[j]), lane)
                    : nullptr;
       const bool swapped = tag[j] < tag[i];
       if (candidates) {
@@ -157,10 +226,10 @@ void PairTriGran::collect_tasks() {
       if (candidates && // the sums are touched only where candidates are kept
           tri::proven_apart_by_travel(candidates, swapped ? travel_.of(j, i) : travel_.of(i, j),
                                       cutoff)) {
-        passed_.push_back({tasks_.size(),
-                           tri_liggghts::pair_approach(x[i], atom->v[i], ri, x[j], atom->v[j],
-                                                       radius[j]),
-                           tag[i], tag[j]});
+        passed.push_back({tasks.size(),
+                          tri_liggghts::pair_approach(x[i], atom->v[i], ri, x[j], atom->v[j],
+                                                      radius[j]),
+                          tag[i], tag[j]});
         continue;
       }
       // Only a pair that touched last step can hold kept points, and with the tangential
@@ -168,10 +237,9 @@ void PairTriGran::collect_tasks() {
       // contact that begins keeps its points from its second step.
       const bool may_hold = !history || !tri::apart_needs_nothing(history);
       double *kept = kept_ && may_hold ? kept_->entry(slot, kept_key(i, j)) : nullptr;
-      tasks_.push_back({i, j, swapped, history, axis, values, touching, candidates, kept});
+      tasks.push_back({i, j, swapped, history, axis, values, touching, candidates, kept});
     }
   }
-  candidates_.end_step();
 }
 
 // The store's key of the pair (i, j), i owned (kept_contact_store.h): j is a periodic image

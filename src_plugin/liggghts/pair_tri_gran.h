@@ -147,6 +147,20 @@ private:
   };
   std::vector<PassedPair> passed_;
   tri_liggghts::ParticleTravel travel_;
+  // The listing on several threads (collect_tasks): a run of neighbour rows, and what one
+  // thread lists from its run before the runs' lists are joined.
+  struct RowRange {
+    int first = 0, last = 0; // rows [first, last) of the neighbour list
+    std::size_t slot = 0;    // the stores' slot of the run's first neighbour pair
+  };
+  struct RowList {
+    std::vector<Task> tasks;
+    std::vector<PassedPair> passed;
+  };
+  std::vector<RowList> row_lists_; // one per thread
+  std::vector<RowRange> split_rows(std::size_t neighbour_pairs, int threads) const;
+  void collect_rows(RowRange rows, int lane, std::vector<Task> &tasks,
+                    std::vector<PassedPair> &passed);
 
   std::vector<tri_liggghts::PublishedContact> contact_rows_; // refilled when published
   void collect_tasks();

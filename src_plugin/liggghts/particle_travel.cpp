@@ -31,9 +31,23 @@ void ParticleTravel::begin_step(const LAMMPS_NS::Atom *atom, bool renumbered) {
 
 void ParticleTravel::touch(const LAMMPS_NS::FixTriParticles &particles, const LAMMPS_NS::Atom *atom,
                            int i) {
-  if (i >= atoms_ || step_of_[i] == step_)
+  if (i >= atoms_)
     return;
-  step_of_[i] = step_;
+  // GCC's atomic builtins on the plain counter (C++17 has no atomic_ref); outside the listing the
+  // counters are read and written plainly.
+  long long *stamp = &step_of_[i];
+  for (long long seen = __atomic_load_n(stamp, __ATOMIC_ACQUIRE);;) {
+    if (seen == step_)
+      return;
+    if (seen == -step_) { // another thread's, a fraction of a microsecond
+      __builtin_ia32_pause();
+      seen = __atomic_load_n(stamp, __ATOMIC_ACQUIRE);
+      continue;
+    }
+    if (__atomic_compare_exchange_n(stamp, &seen, -step_, false, __ATOMIC_ACQ_REL,
+                                    __ATOMIC_ACQUIRE))
+      break;
+  }
   tri::RigidPose now;
   const int s = particles.shape_index(i);
   if (s >= 0) { // an atom not yet given its shape (inserted this step) has no bound
@@ -49,6 +63,7 @@ void ParticleTravel::touch(const LAMMPS_NS::FixTriParticles &particles, const LA
     sum_[i] = 0.0;
   }
   last_[i] = now;
+  __atomic_store_n(stamp, step_, __ATOMIC_RELEASE);
 }
 
 } // namespace tri_liggghts

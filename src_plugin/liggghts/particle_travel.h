@@ -32,8 +32,9 @@ public:
   // Once per force evaluation, before the pairs are listed: a new epoch when `renumbered` (or
   // when the owned atoms' count or tags changed).
   void begin_step(const LAMMPS_NS::Atom *atom, bool renumbered);
-  // Brings owned atom i's sum up to its current pose (first call this step; serial: the host's
-  // listing loop). Ghost atoms are ignored.
+  // Brings owned atom i's sum up to its current pose (first call this step). Callable from the
+  // host's listing threads: the first to ask for an atom brings it up, one that asks meanwhile
+  // waits for it (the sum is the same whichever thread computes it). Ghost atoms are ignored.
   void touch(const LAMMPS_NS::FixTriParticles &particles, const LAMMPS_NS::Atom *atom, int i);
   // The sums of atoms i and j, both touched this step (a sum from an earlier step would bound
   // the motion since then, not since now); epoch 0 otherwise (a ghost). Read-only: callable from
@@ -54,7 +55,9 @@ private:
   std::vector<tri::RigidPose> last_; // per owned atom: its pose when last touched
   std::vector<long long> tags_;      // per owned atom: its tag in this epoch
   std::vector<long long> since_;     // per owned atom: the epoch of its sum (touched in it)
-  std::vector<long long> step_of_;   // per owned atom: the step it was last touched
+  // Per owned atom: the step it was last touched; minus this step while a thread touches it
+  // (claimed and read atomically in touch).
+  std::vector<long long> step_of_;
   int atoms_ = 0;                    // owned atoms of this epoch
   long long epoch_ = 0, step_ = 0;
 };

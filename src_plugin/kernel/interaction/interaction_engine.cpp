@@ -2,6 +2,10 @@
 
 #include <algorithm>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 namespace tri {
 
 void InteractionEngine::prepare(std::size_t n, int threads) {
@@ -71,50 +75,80 @@ void InteractionEngine::finish() {
 }
 
 void InteractionEngine::apply(double **f, double **torque) {
-  // The order of a stable sort by (atom, partner): two images of one partner (a periodic box
-  // smaller than a particle's reach) keep their tasks' order. A counting sort of the sides'
-  // indices by atom (stable), then each atom's few by partner (insertion sort, stable): a
-  // comparison sort of the whole list was 6 % of a settled pile's step. (Summing the atoms on
-  // the run's threads measured slower on 2 threads: the fork cost more than the sums.)
-  contributions_.clear();
+  int atoms = 0;
+  for (const Recipients &r : recipients_)
+    atoms = std::max(atoms, std::max(r.a, r.b) + 1);
+  // On the last run's threads, each summing a contiguous share of the atoms: every atom's
+  // terms are summed by one thread, in the same order as by one thread alone.
+  const int shares =
+      threads_ > 1 && recipients_.size() >= kApplyTasksPerThread * static_cast<std::size_t>(threads_)
+          ? threads_
+          : 1;
+  if (static_cast<int>(shares_.size()) < shares)
+    shares_.resize(static_cast<std::size_t>(shares));
+  used_shares_ = shares;
+  if (shares == 1) {
+    sum_share(shares_[0], 0, atoms, f, torque);
+    return;
+  }
+#pragma omp parallel num_threads(shares)
+  {
+    int t = 0;
+#ifdef _OPENMP
+    t = omp_get_thread_num();
+#endif
+    const long first = static_cast<long>(atoms) * t / shares;
+    const long last = static_cast<long>(atoms) * (t + 1) / shares;
+    sum_share(shares_[static_cast<std::size_t>(t)], static_cast<int>(first),
+              static_cast<int>(last), f, torque);
+  }
+}
+
+// The order of a stable sort by (atom, partner): two images of one partner (a periodic box
+// smaller than a particle's reach) keep their tasks' order. A counting sort of the sides'
+// indices by atom (stable), then each atom's few by partner (insertion sort, stable): a
+// comparison sort of the whole list was 6 % of a settled pile's step.
+void InteractionEngine::sum_share(AtomShare &share, int first_atom, int last_atom, double **f,
+                                  double **torque) {
+  std::vector<Contribution> &from_list = share.contributions;
+  from_list.clear();
   for (std::size_t k = 0; k < recipients_.size(); ++k) {
     const Recipients &r = recipients_[k];
-    if (r.a >= 0)
-      contributions_.push_back({r.a, r.partner_of_a, static_cast<std::uint32_t>(k), 0});
-    if (r.b >= 0)
-      contributions_.push_back({r.b, r.partner_of_b, static_cast<std::uint32_t>(k), 1});
+    if (r.a >= first_atom && r.a < last_atom)
+      from_list.push_back({r.a, r.partner_of_a, static_cast<std::uint32_t>(k), 0});
+    if (r.b >= first_atom && r.b < last_atom)
+      from_list.push_back({r.b, r.partner_of_b, static_cast<std::uint32_t>(k), 1});
   }
-  int atoms = 0;
-  for (const Contribution &c : contributions_)
-    atoms = std::max(atoms, c.atom + 1);
-  first_of_atom_.assign(static_cast<std::size_t>(atoms) + 1, 0);
-  for (const Contribution &c : contributions_)
-    ++first_of_atom_[static_cast<std::size_t>(c.atom) + 1];
-  for (int a = 0; a < atoms; ++a)
-    first_of_atom_[a + 1] += first_of_atom_[a];
-  sorted_.resize(contributions_.size());
-  {
-    std::vector<std::size_t> &next = next_of_atom_;
-    next.assign(first_of_atom_.begin(), first_of_atom_.end() - 1);
-    for (std::size_t i = 0; i < contributions_.size(); ++i)
-      sorted_[next[contributions_[i].atom]++] = static_cast<std::uint32_t>(i);
-  }
-  const Contribution *const from = contributions_.data();
+  const std::size_t atoms = static_cast<std::size_t>(std::max(last_atom - first_atom, 0));
+  std::vector<std::size_t> &first = share.first_of_atom;
+  first.assign(atoms + 1, 0);
+  for (const Contribution &c : from_list)
+    ++first[static_cast<std::size_t>(c.atom - first_atom) + 1];
+  for (std::size_t a = 0; a < atoms; ++a)
+    first[a + 1] += first[a];
+  share.sorted.resize(from_list.size());
+  std::vector<std::size_t> &next = share.next_of_atom;
+  next.assign(first.begin(), first.end() - 1);
+  for (std::size_t i = 0; i < from_list.size(); ++i)
+    share.sorted[next[static_cast<std::size_t>(from_list[i].atom - first_atom)]++] =
+        static_cast<std::uint32_t>(i);
+  const Contribution *const from = from_list.data();
   const PairForceResult *const results = results_.data();
-  std::uint32_t *const order = sorted_.data();
-  const std::size_t *const first = first_of_atom_.data();
-  for (int a = 0; a < atoms; ++a) {
+  std::uint32_t *const order = share.sorted.data();
+  for (std::size_t a = 0; a < atoms; ++a) {
     const std::size_t begin = first[a], end = first[a + 1];
     for (std::size_t i = begin + 1; i < end; ++i)
       for (std::size_t j = i; j > begin && from[order[j]].partner < from[order[j - 1]].partner; --j)
         std::swap(order[j], order[j - 1]);
+    double *const fa = f[first_atom + static_cast<long>(a)];
+    double *const ta = torque[first_atom + static_cast<long>(a)];
     for (std::size_t i = begin; i < end; ++i) {
       const Contribution &c = from[order[i]];
       const PairForceResult &r = results[c.task];
       const Eigen::Vector3d &t = c.side == 0 ? r.torque_a : r.torque_b;
       for (int d = 0; d < 3; ++d) {
-        f[a][d] += c.side == 0 ? r.force_a[d] : -r.force_a[d];
-        torque[a][d] += t[d];
+        fa[d] += c.side == 0 ? r.force_a[d] : -r.force_a[d];
+        ta[d] += t[d];
       }
     }
   }
@@ -141,28 +175,36 @@ void InteractionEngine::add_virial(double *global, double **vatom) const {
   if (!record_)
     return;
   if (global)
-    for (const Contribution &c : contributions_) { // task order
-      const Virial v = side_virial(c);
-      for (int d = 0; d < 6; ++d)
-        global[d] += v[d];
-    }
+    for (std::size_t k = 0; k < recipients_.size(); ++k) // task order, a before b
+      for (int side = 0; side < 2; ++side) {
+        const int atom = side == 0 ? recipients_[k].a : recipients_[k].b;
+        if (atom < 0)
+          continue;
+        const Virial v = side_virial({atom, 0, static_cast<std::uint32_t>(k), side});
+        for (int d = 0; d < 6; ++d)
+          global[d] += v[d];
+      }
   if (vatom)
-    for (std::size_t i = 0; i < sorted_.size(); ++i) { // apply()'s order
-      const Contribution &c = contributions_[sorted_[i]];
-      const Virial v = side_virial(c);
-      for (int d = 0; d < 6; ++d)
-        vatom[c.atom][d] += v[d];
+    for (int s = 0; s < used_shares_; ++s) { // apply()'s order
+      const AtomShare &share = shares_[static_cast<std::size_t>(s)];
+      for (std::uint32_t i : share.sorted) {
+        const Contribution &c = share.contributions[i];
+        const Virial v = side_virial(c);
+        for (int d = 0; d < 6; ++d)
+          vatom[c.atom][d] += v[d];
+      }
     }
 }
 
 std::size_t InteractionEngine::bytes() const {
   std::size_t b = results_.capacity() * sizeof(PairForceResult) +
-                  contributions_.capacity() * sizeof(Contribution) +
                   recipients_.capacity() * sizeof(Recipients) +
                   thread_stats_.capacity() * sizeof(ThreadStats) +
-                  sorted_.capacity() * sizeof(std::uint32_t) +
-                  (first_of_atom_.capacity() + next_of_atom_.capacity()) * sizeof(std::size_t) +
                   record_ranges_.capacity() * sizeof(RecordRange);
+  for (const AtomShare &s : shares_)
+    b += sizeof(s) + s.contributions.capacity() * sizeof(Contribution) +
+         s.sorted.capacity() * sizeof(std::uint32_t) +
+         (s.first_of_atom.capacity() + s.next_of_atom.capacity()) * sizeof(std::size_t);
   for (const InteractionScratch &s : scratch_)
     b += sizeof(s) + s.bytes();
   for (const ThreadQueue &q : queues_)

@@ -94,7 +94,8 @@ public:
   // their partners (-1: no atom; a wall's task names a only), any time after run() and before
   // apply(), on any thread (each task its own slot), by default none. apply() adds them to f
   // and torque (rows indexed by atom) in (atom, partner) order, ties in task order (a before
-  // b): the sums do not depend on the thread count.
+  // b): the sums do not depend on the thread count. apply() runs on the last run's threads,
+  // each summing a share of the atoms, where the tasks are many.
   void set_recipients(std::size_t k, int a, long long partner_of_a, int b, long long partner_of_b) {
     recipients_[k] = {a, b, partner_of_a, partner_of_b};
   }
@@ -152,9 +153,20 @@ private:
   };
   std::vector<RecordRange> record_ranges_; // per task, while recording
   Virial side_virial(const Contribution &c) const;
-  std::vector<Contribution> contributions_; // apply(): the named sides, in task order
-  std::vector<std::uint32_t> sorted_; // apply(): contributions_' indices by (atom, partner)
-  std::vector<std::size_t> first_of_atom_, next_of_atom_; // apply(): the counting sort
+  // apply(): one thread's contiguous share of the atoms, its named sides in task order, their
+  // indices sorted by (atom, partner), and the counting sort's offsets (by atom - first).
+  struct alignas(64) AtomShare {
+    std::vector<Contribution> contributions;
+    std::vector<std::uint32_t> sorted;
+    std::vector<std::size_t> first_of_atom, next_of_atom;
+  };
+  std::vector<AtomShare> shares_;
+  int used_shares_ = 0; // by the last apply()
+  int threads_ = 1;     // of the last run
+  // apply() sums on the run's threads from this many tasks a thread: below, the fork costs
+  // more than the sums.
+  static constexpr std::size_t kApplyTasksPerThread = 256;
+  void sum_share(AtomShare &share, int first_atom, int last_atom, double **f, double **torque);
   InteractionTally tally_;
   std::size_t failed_task_ = 0;
   std::string failure_;
@@ -252,6 +264,7 @@ template <class Host> void InteractionEngine::run(std::size_t n, int threads, Ho
   if (threads < 1)
     threads = 1;
   prepare(n, threads);
+  threads_ = threads;
   const long count = static_cast<long>(n);
   const long group_tasks = tasks_per_group(count, threads);
   const long groups = (count + group_tasks - 1) / group_tasks;
