@@ -10,6 +10,9 @@
 #include "modify.h"
 #include "update.h"
 
+#include <omp.h>
+
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -45,13 +48,23 @@ void FixTriNVE::reset_dt() {
   dtv_ = update->dt;
   dtf_ = 0.5 * update->dt * force->ftm2v;
   // dtfm depends on dtf; the shapes are known by now (init comes first)
-  mass_cache_.assign(particles_ ? particles_->num_shapes() : 0, MassProperties{});
+  mass_cache_.assign(static_cast<std::size_t>(std::max(omp_get_max_threads(), 1)),
+                     std::vector<MassProperties>(particles_ ? particles_->num_shapes() : 0));
+}
+
+int FixTriNVE::integration_threads(int n) {
+  const int threads = omp_get_max_threads();
+  if (threads <= 1 || n < kAtomsPerThread * threads)
+    return 1;
+  if (mass_cache_.size() < static_cast<std::size_t>(threads)) // threads added since init
+    mass_cache_.resize(static_cast<std::size_t>(threads), mass_cache_.front());
+  return threads;
 }
 
 // Inline: twice per atom and step, a hit but for the first atom of each shape.
 inline __attribute__((always_inline)) const FixTriNVE::MassProperties &
-FixTriNVE::mass_properties(int i, double rmass) {
-  MassProperties &m = mass_cache_[particles_->shape_index(i)];
+FixTriNVE::mass_properties(int i, double rmass, std::vector<MassProperties> &cache) {
+  MassProperties &m = cache[particles_->shape_index(i)];
   if (!(m.rmass == rmass))
     compute_mass_properties(i, m);
   return m;
@@ -101,26 +114,42 @@ void FixTriNVE::sync_omega(int i) {
 }
 
 void FixTriNVE::initial_integrate(int) {
+  // Right after read_restart: the forces of the step the file was written at.
+  particles_->take_restored_forces_and_torques(groupbit);
+  const int nlocal = atom->nlocal;
+  rotor_.resize(nlocal);
+  const int threads = integration_threads(nlocal);
+  if (threads == 1) {
+    initial_integrate_share(0, nlocal, mass_cache_[0]);
+    return;
+  }
+#pragma omp parallel num_threads(threads)
+  {
+    const int t = omp_get_thread_num();
+    initial_integrate_share(static_cast<int>(static_cast<long>(nlocal) * t / threads),
+                            static_cast<int>(static_cast<long>(nlocal) * (t + 1) / threads),
+                            mass_cache_[static_cast<std::size_t>(t)]);
+  }
+}
+
+// Atoms [first, last), in the rotor batch's columns from `first` on.
+void FixTriNVE::initial_integrate_share(int first, int last, std::vector<MassProperties> &cache) {
   double **x = atom->x, **v = atom->v, **f = atom->f;
   const double *rmass = atom->rmass;
   const int *mask = atom->mask;
-  const int nlocal = atom->nlocal;
-  // Right after read_restart: the forces of the step the file was written at.
-  particles_->take_restored_forces_and_torques(groupbit);
   // Translation and the first rotational kick per atom; the free rotation of all atoms at
   // once (tri::rotate_free_many, vectorised across atoms: one atom's rotor is a long serial
   // chain, most of a free-flight step when done one atom at a time). Each atom's bits are
   // rotate_free's whatever its place in the batch, so thread and rank counts change nothing.
-  rotor_.resize(nlocal);
   using Batch = RotorBatch;
-  double *const b = rotor_.data.data(); // column c, atom k: b[c * stride + k]
+  double *const b = rotor_.data.data() + first; // column c, atom k: b[c * stride + k]
   const std::size_t stride = rotor_.stride;
-  int *const batch_atom = rotor_.atom.data();
+  int *const batch_atom = rotor_.atom.data() + first;
   int n = 0;
-  for (int i = 0; i < nlocal; ++i) {
+  for (int i = first; i < last; ++i) {
     if (!(mask[i] & groupbit))
       continue;
-    const MassProperties &m = mass_properties(i, rmass[i]);
+    const MassProperties &m = mass_properties(i, rmass[i], cache);
     for (int k = 0; k < 3; ++k) {
       v[i][k] += m.dtfm * f[i][k];
       x[i][k] += dtv_ * v[i][k];
@@ -136,13 +165,12 @@ void FixTriNVE::initial_integrate(int) {
     }
     ++n;
   }
-  tri::rotate_free_many(n, rotor_.column(Batch::qw), rotor_.column(Batch::qx),
-                        rotor_.column(Batch::qy), rotor_.column(Batch::qz),
-                        rotor_.column(Batch::lx), rotor_.column(Batch::ly),
-                        rotor_.column(Batch::lz), rotor_.column(Batch::v0),
-                        rotor_.column(Batch::v1), rotor_.column(Batch::v2), dtv_,
-                        rotor_.column(Batch::wx),
-                        rotor_.column(Batch::wy), rotor_.column(Batch::wz), rotor_.large.data());
+  auto column = [&](Batch::Column c) { return rotor_.column(c) + first; };
+  tri::rotate_free_many(n, column(Batch::qw), column(Batch::qx), column(Batch::qy),
+                        column(Batch::qz), column(Batch::lx), column(Batch::ly),
+                        column(Batch::lz), column(Batch::v0), column(Batch::v1),
+                        column(Batch::v2), dtv_, column(Batch::wx), column(Batch::wy),
+                        column(Batch::wz), rotor_.large.data() + first);
   double **omega = atom->omega;
   for (int k = 0; k < n; ++k) {
     const int i = batch_atom[k];
@@ -167,17 +195,32 @@ void FixTriNVE::RotorBatch::resize(int n) {
 }
 
 void FixTriNVE::final_integrate() {
+  const int nlocal = atom->nlocal;
+  const int threads = integration_threads(nlocal);
+  if (threads == 1) {
+    final_integrate_share(0, nlocal, mass_cache_[0]);
+    return;
+  }
+#pragma omp parallel num_threads(threads)
+  {
+    const int t = omp_get_thread_num();
+    final_integrate_share(static_cast<int>(static_cast<long>(nlocal) * t / threads),
+                          static_cast<int>(static_cast<long>(nlocal) * (t + 1) / threads),
+                          mass_cache_[static_cast<std::size_t>(t)]);
+  }
+}
+
+void FixTriNVE::final_integrate_share(int first, int last, std::vector<MassProperties> &cache) {
   double **v = atom->v, **f = atom->f, **omega = atom->omega;
   const double *rmass = atom->rmass;
   const int *mask = atom->mask;
-  const int nlocal = atom->nlocal;
   // The second kick and omega from q and L, atom by atom: omega is a few dozen flops once the
   // inverse moments are at hand, less than copying the atom into a batch and back (the bits
   // of tri::angular_velocity_unit and of sync_omega).
-  for (int i = 0; i < nlocal; ++i) {
+  for (int i = first; i < last; ++i) {
     if (!(mask[i] & groupbit))
       continue;
-    const MassProperties &m = mass_properties(i, rmass[i]);
+    const MassProperties &m = mass_properties(i, rmass[i], cache);
     for (int k = 0; k < 3; ++k)
       v[i][k] += m.dtfm * f[i][k];
     kick_rotation(i, dtf_);

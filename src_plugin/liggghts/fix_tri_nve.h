@@ -42,9 +42,18 @@ private:
     double rmass = std::numeric_limits<double>::quiet_NaN(); // NaN: equal to no rmass
     double dtfm = 0.0, inverse[3] = {0.0, 0.0, 0.0};
   };
-  std::vector<MassProperties> mass_cache_; // per shape
-  const MassProperties &mass_properties(int i, double rmass); // rmass: atom->rmass[i]
+  // Per thread (the integration's threads each integrate a contiguous share of the atoms), per
+  // shape.
+  std::vector<std::vector<MassProperties>> mass_cache_;
+  // rmass: atom->rmass[i]; cache: the calling thread's.
+  const MassProperties &mass_properties(int i, double rmass, std::vector<MassProperties> &cache);
   void compute_mass_properties(int i, MassProperties &m);
+  // The threads of a half step over n atoms: each atom's update is its own, so any split
+  // gives the same bits; below kAtomsPerThread a thread, the fork costs more than the atoms.
+  static constexpr int kAtomsPerThread = 256;
+  int integration_threads(int n);
+  void initial_integrate_share(int first, int last, std::vector<MassProperties> &cache);
+  void final_integrate_share(int first, int last, std::vector<MassProperties> &cache);
   // The group's atoms of one initial_integrate in the structure-of-arrays form of
   // tri::rotate_free_many: one column of `stride` doubles per quantity (kept between steps: no
   // allocation once grown).

@@ -143,21 +143,23 @@ def test_ranks_contacts(ctx):
 
 
 def test_threads_periodic_gas(ctx):
-    """The granular-gas benchmark deck (validation/performance/pile/in.gas), 125 rocks colliding
+    """The granular-gas benchmark deck (validation/performance/pile/in.gas), 512 rocks colliding
     in a periodic box, 1 and 2 OpenMP threads: with newton off a pair across the boundary is in
     both atoms' neighbour lists (each with the other's image), two tasks that may run on two
-    threads at once; their kept state must be their own. The final dumps (%.17g) and the
-    counters of compute tri/stats averaged over the run must be identical."""
+    threads at once; their kept state must be their own. 512 rocks: enough for fix tri/nve to
+    integrate on both threads, each a share of the atoms (FixTriNVE::kAtomsPerThread), and for
+    pair tri/gran to list its neighbour rows on both. The final dumps (%.17g) and the counters
+    of compute tri/stats averaged over the run must be identical."""
     deck = os.path.join(os.path.dirname(os.path.dirname(HERE)), "validation", "performance",
                         "pile", "in.gas")
     runs = {}
     for threads in (1, 2):
         out = os.path.join(ctx.work, f"gas_t{threads}")
         os.makedirs(out, exist_ok=True)
-        run_deck(ctx, deck, {"mode": "free", "n": 5, "ntri": 20, "steps": 2000, "out": out,
+        run_deck(ctx, deck, {"mode": "free", "n": 8, "ntri": 20, "steps": 2000, "out": out,
                              "dump": 1}, env_extra={"OMP_NUM_THREADS": str(threads)})
         step, atoms = last_frame(os.path.join(out, "final.dump"))
-        check(step == 2000 and len(atoms) == 125, f"{threads} threads: step {step}, "
+        check(step == 2000 and len(atoms) == 512, f"{threads} threads: step {step}, "
               f"{len(atoms)} atoms")
         with open(os.path.join(out, "counters.txt")) as f:
             counters = [l.split() for l in f if l.strip() and not l.startswith("#")][-1][1:]
