@@ -52,6 +52,11 @@ struct FastestPair {
   long tag_i = 0, tag_j = 0;
   // Keeps the pair if it is within reach and approaches strictly faster (ties: the first).
   void consider(const PairGeometry &g, long tag_i, long tag_j);
+  // The same over the pairs considered by `later` after this one's (ties: this one's).
+  void merge(const FastestPair &later) {
+    if (later.normal_speed > normal_speed)
+      *this = later;
+  }
 };
 
 struct FastestParticle {

@@ -37,6 +37,10 @@ enum class TallySource { all, pair, wall };
 struct IntersectingPair {
   long tag_a = 0, tag_b = 0;
   bool found() const { return tag_a != 0; }
+  void merge(const IntersectingPair &later) { // the first of this one's pairs, then later's
+    if (!found())
+      *this = later;
+  }
 };
 
 // The contact of an evaluation that reaches deepest past its soft layers, relative to the depth
@@ -49,6 +53,11 @@ struct DeepestContact {
   // Keeps this interaction if it reaches strictly deeper (ties: the first, in task order).
   void consider(const tri::PairForceResult &r, long tag_a, long tag_b,
                 const std::string &wall = std::string());
+  // The same over the interactions considered by `later` after this one's.
+  void merge(const DeepestContact &later) {
+    if (later.depth_of_limit > depth_of_limit)
+      *this = later;
+  }
 };
 
 // What a source's material says about the scales of its contacts: the normal stiffness kn

@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <limits>
 #include <string>
 
 #include <omp.h>
@@ -415,23 +416,7 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
   if (engine_.failed())
     report_failure();
 
-  const tagint *tag = atom->tag;
-  tri_liggghts::IntersectingPair first;
-  tri_liggghts::DeepestContact deepest;
-  tri_liggghts::FastestPair fastest;
-  std::size_t passed = 0;
-  for (std::size_t k = 0; k < tasks_.size(); ++k) {
-    for (; passed < passed_.size() && passed_[passed].before == k; ++passed)
-      fastest.consider(passed_[passed].geometry, passed_[passed].tag_i, passed_[passed].tag_j);
-    const Task &t = tasks_[k];
-    const tri::PairForceResult &r = engine_.result(k);
-    fastest.consider(task_geometry_[k], tag[t.i], tag[t.j]);
-    if (r.intersecting && !first.found())
-      first = {std::min(tag[t.i], tag[t.j]), std::max(tag[t.i], tag[t.j])};
-    deepest.consider(r, std::min(tag[t.i], tag[t.j]), std::max(tag[t.i], tag[t.j]));
-  }
-  for (; passed < passed_.size(); ++passed)
-    fastest.consider(passed_[passed].geometry, passed_[passed].tag_i, passed_[passed].tag_j);
+  const StepSummary summary = summarize(nthreads);
   engine_.apply(atom->f, atom->torque); // the recipients set on the threads, above
   // Each atom's own term, on the rank that owns it (its recipient side): a pair across ranks
   // counts once in the sum over ranks, each of its atoms where it lives.
@@ -440,10 +425,67 @@ void PairTriGran::compute_force(int eflag, int vflag, int) {
   publish_contacts();
   tri::InteractionTally tally = engine_.tally();
   tally.add_passed(static_cast<long long>(passed_.size())); // as their apart_result would
-  board.publish(board_slot_, tally, first);
-  board.publish_deepest(board_slot_, deepest);
-  board.publish_fastest_pair(fastest);
+  board.publish(board_slot_, tally, summary.first);
+  board.publish_deepest(board_slot_, summary.deepest);
+  board.publish_fastest_pair(summary.fastest);
   board.publish_particle_pairs(list);
+}
+
+void PairTriGran::StepSummary::merge(const StepSummary &later) {
+  first.merge(later.first);
+  deepest.merge(later.deepest);
+  fastest.merge(later.fastest);
+}
+
+// Tasks [first_task, last_task) in the listing's order, each after the pairs passed over before
+// it; with `trailing`, the pairs passed over after the last task as well.
+PairTriGran::StepSummary PairTriGran::summarize_tasks(std::size_t first_task,
+                                                      std::size_t last_task, bool trailing) const {
+  const tagint *tag = atom->tag;
+  StepSummary s;
+  std::size_t passed =
+      static_cast<std::size_t>(std::lower_bound(passed_.begin(), passed_.end(), first_task,
+                                                [](const PassedPair &p, std::size_t k) {
+                                                  return p.before < k;
+                                                }) -
+                               passed_.begin());
+  auto consider_passed_before = [&](std::size_t k) {
+    for (; passed < passed_.size() && passed_[passed].before <= k; ++passed)
+      s.fastest.consider(passed_[passed].geometry, passed_[passed].tag_i, passed_[passed].tag_j);
+  };
+  for (std::size_t k = first_task; k < last_task; ++k) {
+    consider_passed_before(k);
+    const Task &t = tasks_[k];
+    const tri::PairForceResult &r = engine_.result(k);
+    const long a = std::min(tag[t.i], tag[t.j]), b = std::max(tag[t.i], tag[t.j]);
+    s.fastest.consider(task_geometry_[k], tag[t.i], tag[t.j]);
+    if (r.intersecting && !s.first.found())
+      s.first = {a, b};
+    s.deepest.consider(r, a, b);
+  }
+  if (trailing)
+    consider_passed_before(std::numeric_limits<std::size_t>::max());
+  return s;
+}
+
+// The step's run-safety summary: the fastest approaching pair, the first intersecting one and
+// the deepest contact, each the first extreme in the listing's order. Blocks of kSummaryTasks
+// tasks on the engine's threads, merged in order: the same on any thread count.
+PairTriGran::StepSummary PairTriGran::summarize(int threads) {
+  const std::size_t n = tasks_.size();
+  const std::size_t blocks = std::max<std::size_t>(1, (n + kSummaryTasks - 1) / kSummaryTasks);
+  summaries_.resize(blocks);
+  const long count = static_cast<long>(blocks);
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1 && count > 1)
+  for (long b = 0; b < count; ++b) {
+    const std::size_t first = static_cast<std::size_t>(b) * kSummaryTasks;
+    summaries_[static_cast<std::size_t>(b)] =
+        summarize_tasks(first, std::min(n, first + kSummaryTasks), b == count - 1);
+  }
+  StepSummary out = summaries_[0];
+  for (std::size_t b = 1; b < blocks; ++b)
+    out.merge(summaries_[b]);
+  return out;
 }
 
 void PairTriGran::publish_contacts() {

@@ -162,6 +162,18 @@ private:
   void collect_rows(RowRange rows, int lane, std::vector<Task> &tasks,
                     std::vector<PassedPair> &passed);
 
+  // What the run-safety check reads of a step (summarize): over a run of tasks, or the step.
+  struct StepSummary {
+    tri_liggghts::IntersectingPair first;
+    tri_liggghts::DeepestContact deepest;
+    tri_liggghts::FastestPair fastest;
+    void merge(const StepSummary &later);
+  };
+  static constexpr std::size_t kSummaryTasks = 256;
+  std::vector<StepSummary> summaries_; // per block of kSummaryTasks tasks
+  StepSummary summarize_tasks(std::size_t first_task, std::size_t last_task, bool trailing) const;
+  StepSummary summarize(int threads);
+
   std::vector<tri_liggghts::PublishedContact> contact_rows_; // refilled when published
   void collect_tasks();
   // The step's contact records on the board, where a contact output wants them.

@@ -66,12 +66,24 @@ void InteractionEngine::record_failure(std::size_t k, const char *what) {
   }
 }
 
+// The results' tally in blocks of kTallyTasks tasks, on the run's threads, the blocks added in
+// order: the energy's sum depends on the blocks, which do not depend on the thread count.
 void InteractionEngine::finish() {
   tally_ = InteractionTally{};
   for (const ContactStats &s : thread_stats_) // counts: the order does not matter
     tally_.distance += s;
-  for (const PairForceResult &r : results_)
-    tally_.add(r);
+  const std::size_t n = results_.size();
+  const long blocks = static_cast<long>((n + kTallyTasks - 1) / kTallyTasks);
+  block_tallies_.assign(static_cast<std::size_t>(blocks), InteractionTally{});
+#pragma omp parallel for schedule(static) num_threads(threads_) if (threads_ > 1 && blocks > 1)
+  for (long b = 0; b < blocks; ++b) {
+    InteractionTally &t = block_tallies_[static_cast<std::size_t>(b)];
+    const std::size_t first = static_cast<std::size_t>(b) * kTallyTasks;
+    for (std::size_t k = first; k < std::min(n, first + kTallyTasks); ++k)
+      t.add(results_[k]);
+  }
+  for (const InteractionTally &t : block_tallies_)
+    tally_ += t;
 }
 
 void InteractionEngine::apply(double **f, double **torque) {
@@ -198,6 +210,7 @@ void InteractionEngine::add_virial(double *global, double **vatom) const {
 
 std::size_t InteractionEngine::bytes() const {
   std::size_t b = results_.capacity() * sizeof(PairForceResult) +
+                  block_tallies_.capacity() * sizeof(InteractionTally) +
                   recipients_.capacity() * sizeof(Recipients) +
                   thread_stats_.capacity() * sizeof(ThreadStats) +
                   record_ranges_.capacity() * sizeof(RecordRange);

@@ -168,6 +168,8 @@ private:
   static constexpr std::size_t kApplyTasksPerThread = 256;
   void sum_share(AtomShare &share, int first_atom, int last_atom, double **f, double **torque);
   InteractionTally tally_;
+  static constexpr std::size_t kTallyTasks = 256; // finish(): tasks per block of the tally
+  std::vector<InteractionTally> block_tallies_;
   std::size_t failed_task_ = 0;
   std::string failure_;
 
