@@ -26,8 +26,10 @@
 // The scratch is the thread's; the stats take the distance kernel's counters.
 //
 // Determinism: every task writes its result into its own slot; the tally is summed over the
-// slots in task order, and the per-atom sums in (atom, partner) order (stable: equal keys keep
-// the order they were contributed in), so the forces are bitwise the same for any thread count.
+// slots in fixed blocks of tasks, each in task order, the blocks in order, and the per-atom sums
+// in (atom, partner) order (stable: equal keys keep the order they were contributed in), so the
+// forces and the tally are bitwise the same for any thread count. Both sums run on the run's
+// threads (each a share of the blocks or of the atoms).
 // Errors: an exception thrown by the host or the kernel does not leave the parallel region (it
 // would end in std::terminate); a task that throws is not planned further, a kernel run that
 // throws fails every task of its group that requested it. The engine keeps the message of the

@@ -32,7 +32,7 @@ struct InteractionTally {
   long long deep_contacts = 0;
   double max_overlap_layers = 0.0;
   double max_depth_of_limit = 0.0;
-  double elastic_energy = 0.0; // J, summed in task order (so the same on any thread count)
+  double elastic_energy = 0.0; // J, summed in a fixed order (so the same on any thread count)
   long long body_pairs_passed = 0; // proven apart by the host's travel proof, never evaluated
 
   void add(const PairForceResult &r); // one interaction
