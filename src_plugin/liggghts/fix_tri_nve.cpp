@@ -116,19 +116,25 @@ void FixTriNVE::sync_omega(int i) {
 void FixTriNVE::initial_integrate(int) {
   // Right after read_restart: the forces of the step the file was written at.
   particles_->take_restored_forces_and_torques(groupbit);
+  rotor_.resize(atom->nlocal);
+  over_shares(&FixTriNVE::initial_integrate_share);
+}
+
+// share(first, last, cache) over the owned atoms, on integration_threads' threads, each a
+// contiguous share with its own cache.
+void FixTriNVE::over_shares(void (FixTriNVE::*share)(int, int, std::vector<MassProperties> &)) {
   const int nlocal = atom->nlocal;
-  rotor_.resize(nlocal);
   const int threads = integration_threads(nlocal);
   if (threads == 1) {
-    initial_integrate_share(0, nlocal, mass_cache_[0]);
+    (this->*share)(0, nlocal, mass_cache_[0]);
     return;
   }
 #pragma omp parallel num_threads(threads)
   {
     const int t = omp_get_thread_num();
-    initial_integrate_share(static_cast<int>(static_cast<long>(nlocal) * t / threads),
-                            static_cast<int>(static_cast<long>(nlocal) * (t + 1) / threads),
-                            mass_cache_[static_cast<std::size_t>(t)]);
+    (this->*share)(static_cast<int>(static_cast<long>(nlocal) * t / threads),
+                   static_cast<int>(static_cast<long>(nlocal) * (t + 1) / threads),
+                   mass_cache_[static_cast<std::size_t>(t)]);
   }
 }
 
@@ -194,21 +200,7 @@ void FixTriNVE::RotorBatch::resize(int n) {
   }
 }
 
-void FixTriNVE::final_integrate() {
-  const int nlocal = atom->nlocal;
-  const int threads = integration_threads(nlocal);
-  if (threads == 1) {
-    final_integrate_share(0, nlocal, mass_cache_[0]);
-    return;
-  }
-#pragma omp parallel num_threads(threads)
-  {
-    const int t = omp_get_thread_num();
-    final_integrate_share(static_cast<int>(static_cast<long>(nlocal) * t / threads),
-                          static_cast<int>(static_cast<long>(nlocal) * (t + 1) / threads),
-                          mass_cache_[static_cast<std::size_t>(t)]);
-  }
-}
+void FixTriNVE::final_integrate() { over_shares(&FixTriNVE::final_integrate_share); }
 
 void FixTriNVE::final_integrate_share(int first, int last, std::vector<MassProperties> &cache) {
   double **v = atom->v, **f = atom->f, **omega = atom->omega;

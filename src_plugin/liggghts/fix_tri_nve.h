@@ -54,6 +54,7 @@ private:
   int integration_threads(int n);
   void initial_integrate_share(int first, int last, std::vector<MassProperties> &cache);
   void final_integrate_share(int first, int last, std::vector<MassProperties> &cache);
+  void over_shares(void (FixTriNVE::*share)(int, int, std::vector<MassProperties> &));
   // The group's atoms of one initial_integrate in the structure-of-arrays form of
   // tri::rotate_free_many: one column of `stride` doubles per quantity (kept between steps: no
   // allocation once grown).
