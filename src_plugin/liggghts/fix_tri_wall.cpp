@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cstring>
 #include <limits>
+#include <omp.h>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -157,60 +158,132 @@ void FixTriWall::setup(int vflag) { compute(false, vflag); }
 
 void FixTriWall::post_force(int vflag) { compute(true, vflag); }
 
+// The step's tasks: mesh by mesh, the particles near it in atom order. Each mesh's contact
+// lists are turned into per-particle triangle lists on one thread; the particles are then
+// shared out in contiguous runs, each thread counting its tasks, then writing them at offsets
+// that give the serial order. A task's kept candidates are asked for by the thread that owns
+// its particle, in slot order (candidate_store.h), so each key gets the entry it would serially.
 void FixTriWall::collect_tasks() {
-  ntasks_ = 0;
-  candidates_.begin_step();
+  const int nlocal = atom->nlocal;
+  const std::size_t nmesh = meshes_.size();
+  if (near_.size() < nmesh * static_cast<std::size_t>(nlocal))
+    near_.resize(nmesh * static_cast<std::size_t>(nlocal));
+  for (std::size_t m = 0; m < nmesh; ++m)
+    list_near_triangles(static_cast<int>(m));
+  const int threads = tri_liggghts::pair_loop_threads(settings_.loop, nmesh * nlocal);
+  thread_tasks_.assign(nmesh * static_cast<std::size_t>(threads), 0);
+  if (threads <= 1) {
+    count_tasks(0, 0, nlocal);
+    begin_listing(1);
+    write_tasks(0, 0, nlocal);
+  } else {
+#pragma omp parallel num_threads(threads)
+    {
+      const int t = omp_get_thread_num();
+      const int first = static_cast<int>(static_cast<long>(nlocal) * t / threads);
+      const int last = static_cast<int>(static_cast<long>(nlocal) * (t + 1) / threads);
+      count_tasks(t, first, last);
+#pragma omp barrier
+#pragma omp single
+      begin_listing(threads);
+      write_tasks(t, first, last);
+    }
+  }
+  candidates_.end_step();
+}
+
+// near_[m * nlocal + a]: mesh m's triangles within the contact lists of particle a, (global id,
+// mesh-local index). Left empty for particles outside the group; write_tasks empties them again.
+void FixTriWall::list_near_triangles(int m) {
   const int nlocal = atom->nlocal;
   const int *mask = atom->mask;
-  std::vector<std::vector<std::pair<int, int>>> &near = near_; // atom -> (global id, local tri)
-  if (static_cast<int>(near.size()) < nlocal)
-    near.resize(nlocal);
-  for (std::size_t m = 0; m < meshes_.size(); ++m) {
-    for (int a = 0; a < nlocal; ++a)
-      near[a].clear();
-    TriMesh *mesh = meshes_[m]->triMesh();
-    FixNeighlistMesh *list = meshes_[m]->meshNeighlist();
-    const int ntri = mesh->sizeLocal() + mesh->sizeGhost();
-    for (int t = 0; t < ntri; ++t)
-      for (int a : list->get_contact_list(t))
-        if (a < nlocal && (mask[a] & groupbit))
-          near[a].emplace_back(mesh->id(t), t);
-    for (int a = 0; a < nlocal; ++a) {
-      double *h = history_[a] + m * tri::kHistoryDoubles;
-      if (near[a].empty()) {
-        // The history is written compactly (contact_history.h): an empty first slot means an
-        // empty history, so most particles far from the walls cost a read, not a fill.
-        if (tri::slot_occupied(h, 0))
-          std::fill(h, h + tri::kHistoryDoubles, 0.0);
-        std::fill(axis(a, static_cast<int>(m)), axis(a, static_cast<int>(m)) + 3, 0.0);
-        double *k = kept(a, static_cast<int>(m));
-        if (k && tri::kept_state(k))
-          tri::clear_kept_contacts(k);
+  std::vector<std::pair<int, int>> *near = near_.data() + static_cast<std::size_t>(m) * nlocal;
+  TriMesh *mesh = meshes_[m]->triMesh();
+  FixNeighlistMesh *list = meshes_[m]->meshNeighlist();
+  const int ntri = mesh->sizeLocal() + mesh->sizeGhost();
+  for (int t = 0; t < ntri; ++t)
+    for (int a : list->get_contact_list(t))
+      if (a < nlocal && (mask[a] & groupbit))
+        near[a].emplace_back(mesh->id(t), t);
+}
+
+// How many tasks particles [first, last) give, per mesh: thread_tasks_[thread * meshes + m].
+void FixTriWall::count_tasks(int thread, int first, int last) {
+  const std::size_t nmesh = meshes_.size();
+  const std::size_t nlocal = static_cast<std::size_t>(atom->nlocal);
+  for (std::size_t m = 0; m < nmesh; ++m) {
+    std::size_t n = 0;
+    for (int a = first; a < last; ++a)
+      n += near_[m * nlocal + static_cast<std::size_t>(a)].empty() ? 0 : 1;
+    thread_tasks_[static_cast<std::size_t>(thread) * nmesh + m] = n;
+  }
+}
+
+// The threads' counts become their first task per mesh (the serial order: mesh, then thread),
+// and the task list and the candidate store are readied for `threads` writers.
+void FixTriWall::begin_listing(int threads) {
+  const std::size_t nmesh = meshes_.size();
+  std::size_t next = 0;
+  for (std::size_t m = 0; m < nmesh; ++m)
+    for (std::size_t t = 0; t < static_cast<std::size_t>(threads); ++t) {
+      const std::size_t n = thread_tasks_[t * nmesh + m];
+      thread_tasks_[t * nmesh + m] = next;
+      next += n;
+    }
+  ntasks_ = next;
+  if (tasks_.size() < ntasks_)
+    tasks_.resize(ntasks_); // tasks are reused: their triangle lists keep their capacity
+  candidates_.begin_step(ntasks_, threads);
+}
+
+// Particles [first, last)'s tasks, from the thread's first task per mesh (begin_listing); a
+// particle near no triangle of a mesh has its kept state for that mesh cleared.
+void FixTriWall::write_tasks(int thread, int first, int last) {
+  const std::size_t nmesh = meshes_.size();
+  const std::size_t nlocal = static_cast<std::size_t>(atom->nlocal);
+  for (std::size_t m = 0; m < nmesh; ++m) {
+    std::size_t k = thread_tasks_[static_cast<std::size_t>(thread) * nmesh + m];
+    for (int a = first; a < last; ++a) {
+      std::vector<std::pair<int, int>> &near = near_[m * nlocal + static_cast<std::size_t>(a)];
+      if (near.empty()) {
+        clear_wall_state(a, static_cast<int>(m));
         continue;
       }
       // Ordered by global triangle id, so the result does not depend on how the mesh is
       // split between ranks.
-      std::sort(near[a].begin(), near[a].end());
-      if (ntasks_ == tasks_.size())
-        tasks_.emplace_back();
-      Task &task = tasks_[ntasks_++]; // reused: its triangle list keeps its capacity
+      std::sort(near.begin(), near.end());
+      Task &task = tasks_[k];
       task.atom = a;
       task.mesh = static_cast<int>(m);
       task.triangles.clear();
       task.ids.clear();
-      for (const auto &p : near[a]) {
+      for (const auto &p : near) {
         task.ids.push_back(p.first);
         task.triangles.push_back(p.second);
       }
+      near.clear();
       task.candidates =
           settings_.interaction.coherence > 0.0
-              ? candidates_.entry(ntasks_ - 1,
-                                  tri_liggghts::CandidateStore::wall_key(atom->tag[a],
-                                                                         static_cast<int>(m)))
+              ? candidates_.entry(
+                    k, tri_liggghts::CandidateStore::wall_key(atom->tag[a], static_cast<int>(m)),
+                    thread)
               : nullptr;
+      ++k;
     }
   }
-  candidates_.end_step();
+}
+
+// Particle a is near no triangle of mesh m: its contact with it, if any, has ended.
+void FixTriWall::clear_wall_state(int a, int m) {
+  double *h = history_[a] + m * tri::kHistoryDoubles;
+  // The history is written compactly (contact_history.h): an empty first slot means an empty
+  // history, so most particles far from the walls cost a read, not a fill.
+  if (tri::slot_occupied(h, 0))
+    std::fill(h, h + tri::kHistoryDoubles, 0.0);
+  std::fill(axis(a, m), axis(a, m) + 3, 0.0);
+  double *k = kept(a, m);
+  if (k && tri::kept_state(k))
+    tri::clear_kept_contacts(k);
 }
 
 void FixTriWall::build_wall(int k, std::vector<Eigen::Vector3d> &nodes,

@@ -107,7 +107,9 @@ private:
   }
   std::vector<Task> tasks_; // the first ntasks_ are this step's
   std::size_t ntasks_ = 0;
+  // per mesh and particle, its triangles near the particle (list_near_triangles)
   std::vector<std::vector<std::pair<int, int>>> near_;
+  std::vector<std::size_t> thread_tasks_; // per thread and mesh: its tasks, then its first
   std::vector<tri::TriangleSoA> patches_;
   struct NodeScratch { // build_wall's, one per thread
     std::vector<Eigen::Vector3d> nodes, velocities;
@@ -125,6 +127,11 @@ private:
   void publish_contacts();
   void add_wall_loads();
   void collect_tasks();
+  void list_near_triangles(int m);
+  void count_tasks(int thread, int first, int last);
+  void begin_listing(int threads);
+  void write_tasks(int thread, int first, int last);
+  void clear_wall_state(int a, int m);
   // A task's kept state (candidates, the atom's history and axis for this mesh) lies wherever
   // its entry and atom are: asked for kPrefetchAhead tasks ahead, as pair tri/gran does, it
   // arrives while the tasks before it run.
