@@ -187,6 +187,28 @@ TEST(ParticleContacts, StatsCountNewtonIterationsAndFallbacks) {
   EXPECT_LT(stats.fallbacks, stats.penalty_pairs / 5);
 }
 
+// A wall has no layer of its own (its mesh is its contact surface): the particle's layer sets
+// the tolerance. With a tolerance of 0 no penalty result could be certified and every wall
+// pair within the layer would go to brute force.
+TEST(ParticleContacts, AWallsZeroLayerTakesTheParticlesTolerance) {
+  ContactOptions opt;
+  EXPECT_EQ(certified_tolerance(opt, 2e-4, 0.0), opt.tolerance_ratio * 2e-4);
+  EXPECT_EQ(certified_tolerance(opt, 0.0, 2e-4), opt.tolerance_ratio * 2e-4);
+  EXPECT_EQ(certified_tolerance(opt, 1e-4, 3e-4), opt.tolerance_ratio * 1e-4);
+  ContactOptions bf;
+  bf.kernel = DistanceKernel::BruteForce;
+  ContactStats stats;
+  for (const Scene &s : all_scenes()) {
+    std::vector<TriangleContact> ref, got;
+    ContactStats unused;
+    find_triangle_contacts(s.a, 2 * s.eps, s.b, 0.0, bf, ref, unused);
+    find_triangle_contacts(s.a, 2 * s.eps, s.b, 0.0, opt, got, stats);
+    expect_same_pairs(ref, got, opt.tolerance_ratio * 2 * s.eps, s.name);
+  }
+  EXPECT_GT(stats.penalty_pairs, 0);
+  EXPECT_LT(stats.fallbacks, stats.penalty_pairs / 5);
+}
+
 TEST(ParticleContacts, PenetratingParticlesGiveIntersectingPairsWithFiniteNormals) {
   const Scene s = make_scene(40, 4e-3, 1e-4, -1e-4, 77);
   const auto c = contacts(s, ContactOptions{});

@@ -132,7 +132,12 @@ HybridSettings hybrid_settings(const ContactOptions &opt, double eps_a, double e
   hs.newton_iterations = opt.newton_iterations;
   hs.retry_iterations = opt.retry_iterations;
   hs.penalty = opt.penalty;
-  hs.tolerance = opt.tolerance_ratio * std::min(eps_a, eps_b);
+  // A wall has no layer of its own (its mesh is its contact surface): the particle's sets the
+  // scale. A tolerance of 0 would certify no penalty result, and every wall pair would fall
+  // back to brute force.
+  const double thinner =
+      eps_a > 0.0 && eps_b > 0.0 ? std::min(eps_a, eps_b) : std::max(eps_a, eps_b);
+  hs.tolerance = opt.tolerance_ratio * thinner;
   hs.cutoff = eps_a + eps_b;
   return hs;
 }

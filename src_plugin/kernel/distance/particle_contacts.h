@@ -6,13 +6,14 @@
 // not overlap (triangle_boxes.h: never drops a pair in contact); a distance kernel on the
 // remaining pairs (distance_kernels.h); every pair with distance < eps_a + eps_b reported.
 //
-// Units: lengths in the unit of the triangles (metres in the simulation); eps_a, eps_b > 0.
+// Units: lengths in the unit of the triangles (metres in the simulation); eps_a, eps_b >= 0,
+// their sum > 0 (a wall's layer is 0).
 // Boundary: a pair at distance exactly eps_a + eps_b is not in contact.
 // Accuracy: BruteForce / BruteForceScalar are the reference (triangle_distance.h).
 // Hybrid and BatchedHybrid report the same set of pairs as brute force, and each reported
-// distance within tolerance_ratio * min(eps_a, eps_b) of brute force's (pairs whose
-// penalty bounds straddle the cutoff are recomputed by brute force). Penalty alone is
-// unchecked (distance_kernels.h) and for studies only.
+// distance within tolerance_ratio * min(eps_a, eps_b) of brute force's (the positive one
+// where the other is 0, a wall's; pairs whose penalty bounds straddle the cutoff are
+// recomputed by brute force). Penalty alone is unchecked (distance_kernels.h), for studies.
 // Threads: results (values and order) are identical for every parallel mode and thread
 // count; `parallel` opens an OpenMP parallel region inside the call, so callers that
 // parallelise over particle pairs pass ContactParallelism::None. Only a list of at least
@@ -74,7 +75,7 @@ struct ContactOptions {
   // Hybrid: the second penalty run of the pairs the first cannot certify, before brute force
   // (distance_kernels.h: HybridSettings::retry_iterations); 0 or <= newton_iterations: none.
   int retry_iterations = 8;
-  double tolerance_ratio = 1e-4; // hybrid distance tolerance / min(eps_a, eps_b)
+  double tolerance_ratio = 1e-4; // hybrid distance tolerance / min(eps_a, eps_b) (above)
   PenaltyParameters penalty;     // scale-free penalty weight and regularisation
 };
 
