@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-
+#include <cmath>
 #include <string>
 
 using namespace tri;
@@ -73,6 +73,35 @@ TEST(PenaltyDistance, ConvergedResultsMatchBruteForce) {
   }
   // The penalty alone certifies the large majority of separated pairs.
   EXPECT_GT(converged, 0.9 * separated);
+}
+
+// Two faces of rocks 10 degrees apart in a formed hopper (metres): unbounded, the generalised
+// Newton steps cycle for ever between a corner and two points far outside the triangles
+// (period three) and stop at a vertex pair 0.48 mm too far; a step bounded to a triangle's
+// span settles on the closest points within 6 steps.
+TEST(PenaltyDistance, BoundedStepsBreakACycleOfActiveSets) {
+  const Eigen::Vector3d a[3] = {
+      {-0.0008432420353616961, -0.0009447414542327605, -0.07550916740943701},
+      {-0.001144891270276907, 0.0007037642719116859, -0.07492767749197368},
+      {-0.0010552910168887843, -0.0009981245114642654, -0.07500738202772173}};
+  const Eigen::Vector3d b[3] = {
+      {-0.0006444356577011256, -0.0001740053094846087, -0.07492916811259531},
+      {-0.001304370300762946, -0.0009535363316812652, -0.07391752388009105},
+      {-0.001011693836421238, 6.420957376889077e-05, -0.0743402908998256}};
+  const double d = triangle_distance(a, b).distance;
+  const double tolerance = 2e-8; // the hybrid kernel's, 1e-4 of the 0.2 mm layer
+  TrianglePairBlock block;
+  for (int l = 0; l < kPairLanes; ++l)
+    block.set_lane(l, a, b);
+  PenaltyParameters unbounded;
+  unbounded.max_step = INFINITY;
+  PenaltyBlockResult r;
+  penalty_block(32, block, unbounded, 0.0, r);
+  EXPECT_GT(r.upper[0] - d, 1e-4);
+  penalty_block(8, block, PenaltyParameters{}, 0.0, r);
+  EXPECT_GT(r.lower[0], 0.0);
+  EXPECT_LE(r.upper[0] - r.lower[0], tolerance);
+  EXPECT_NEAR(r.upper[0], d, tolerance);
 }
 
 TEST(PenaltyDistance, IterationIsScaleFree) {

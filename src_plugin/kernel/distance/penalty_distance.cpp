@@ -20,7 +20,7 @@ TRI_LANE double dot3(const double u[3], const double v[3]) {
 // lowering (see brute_force_lane); after inlining everything is in registers.
 template <int Iterations, bool Resume>
 TRI_LANE void penalty_lane(const double (*c)[kPairLanes], int l, double weight, double reg,
-                           double step_tol2, const double (*start)[kPairLanes],
+                           double max_step, double step_tol2, const double (*start)[kPairLanes],
                            PenaltyBlockResult &out) {
   double a0[3], b0[3], col[4][3], r0[3];
 #pragma GCC unroll 3
@@ -88,8 +88,12 @@ TRI_LANE void penalty_lane(const double (*c)[kPairLanes], int l, double weight, 
     const double x2 = y2 * inv2 - l32 * x3;
     const double x1 = y1 * inv1 - l21 * x2 - l31 * x3;
     const double x0 = y0 * inv0 - l10 * x1 - l20 * x2 - l30 * x3;
-    z0 += x0, z1 += x1, z2 += x2, z3 += x3;
-    const double step2 = x0 * x0 + x1 * x1 + x2 * x2 + x3 * x3;
+    // The step, shortened to max_step in its largest barycentric component (penalty_distance.h).
+    const double longest = std::max(std::max(std::fabs(x0), std::fabs(x1)),
+                                    std::max(std::fabs(x2), std::fabs(x3)));
+    const double shorten = std::min(1.0, max_step / std::max(longest, 1e-300));
+    z0 += shorten * x0, z1 += shorten * x1, z2 += shorten * x2, z3 += shorten * x3;
+    const double step2 = shorten * shorten * (x0 * x0 + x1 * x1 + x2 * x2 + x3 * x3);
     first_converged =
         std::min(first_converged, std::max(-std::copysign(INFINITY, tol2 - step2), double(it)));
   }
@@ -136,10 +140,11 @@ void penalty_lanes(const TrianglePairBlock &block, const PenaltyParameters &para
                    double step_tolerance, const double (*start)[kPairLanes],
                    PenaltyBlockResult &out) {
   const double weight = params.penalty_weight, reg = params.regularisation;
+  const double max_step = params.max_step;
   const double step_tol2 = step_tolerance * step_tolerance;
 #pragma omp simd
   for (int l = 0; l < Lanes; ++l)
-    penalty_lane<Iterations, Resume>(block.c, l, weight, reg, step_tol2, start, out);
+    penalty_lane<Iterations, Resume>(block.c, l, weight, reg, max_step, step_tol2, start, out);
   for (int l = 0; l < Lanes; ++l) {
     double d2 = 0.0;
     for (int k = 0; k < 3; ++k) {

@@ -8,8 +8,9 @@
 // from the centroids (all 1/3) with `Iterations` quasi-Newton steps
 //   (H + beta I) dz = -grad,  H = J^T J + alpha * sum_{k: c_k > 0} grad c_k grad c_k^T,
 // (the generalised Hessian of the piecewise quadratic objective) solved by an unrolled 4x4
-// LDL^T. The iteration count is a template parameter and the loop has no branches
-// (max/compare-select only), so it vectorises across pairs.
+// LDL^T, each step shortened to at most max_step in its largest component
+// (PenaltyParameters). The iteration count is a template parameter and the loop has no
+// branches (max/compare-select only), so it vectorises across pairs.
 //
 // Scaling: the objective is ~ s^2 |dz|^2 with s^2 the mean squared edge of the two
 // triangles, so alpha = penalty_weight * s^2 and beta = regularisation * s^2 and the
@@ -40,6 +41,13 @@ struct PenaltyParameters {
   // faces, slivers); constant over the iterations (unlike the paper's reference code, which
   // grows it until the steps vanish), so a small step really means convergence.
   double regularisation = 1e-9;
+  // Longest step in any barycentric unknown: a triangle's span. Generalised Newton on the
+  // piecewise quadratic objective can cycle between active sets (seen: a period of three
+  // steps between a corner and two points far outside the triangles, for ever); a step that
+  // cannot cross a triangle in one go breaks such cycles. Of the triangle pairs a formed hopper
+  // tests, the share the first 4 steps cannot certify falls from 22 % to 19 %, after 8 steps
+  // from 5.9 % to 1.7 %. Steps within it, the last ones of a converging run, are unchanged.
+  double max_step = 1.0;
 };
 
 // Per-lane output of penalty_block; lengths in the input unit.
