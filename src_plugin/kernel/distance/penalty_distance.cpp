@@ -89,8 +89,8 @@ TRI_LANE void penalty_lane(const double (*c)[kPairLanes], int l, double weight, 
     const double x1 = y1 * inv1 - l21 * x2 - l31 * x3;
     const double x0 = y0 * inv0 - l10 * x1 - l20 * x2 - l30 * x3;
     // The step, shortened to max_step in its largest barycentric component (penalty_distance.h).
-    const double longest = std::max(std::max(std::fabs(x0), std::fabs(x1)),
-                                    std::max(std::fabs(x2), std::fabs(x3)));
+    const double longest =
+        std::max(std::max(std::fabs(x0), std::fabs(x1)), std::max(std::fabs(x2), std::fabs(x3)));
     const double shorten = std::min(1.0, max_step / std::max(longest, 1e-300));
     z0 += shorten * x0, z1 += shorten * x1, z2 += shorten * x2, z3 += shorten * x3;
     const double step2 = shorten * shorten * (x0 * x0 + x1 * x1 + x2 * x2 + x3 * x3);
