@@ -148,7 +148,7 @@ TEST_P(HybridAtScale, RetryKeepsBruteForcesAnswersWithFewerFallbacks) {
 
 // Many body pairs' lists at once (hybrid_distances_jobs, what the interaction engine runs):
 // short lists of 1 to 11 pairs, with settings that differ from job to job (tolerance, cutoff,
-// iteration counts, no retry), so that blocks of the first run, of the retry and of brute
+// iteration counts, no retry, the penalty's step bound), so that blocks of the first run, of the retry and of brute
 // force mix jobs and flush where the settings change. Every job's results are bitwise
 // hybrid_distances' on its list alone, and the counters sum to theirs.
 TEST(Hybrid, JobsRunTogetherGiveEachJobsOwnResults) {
@@ -169,6 +169,8 @@ TEST(Hybrid, JobsRunTogetherGiveEachJobsOwnResults) {
       hs.retry_iterations = 0;
     if (j % 13 == 4)
       hs.newton_iterations = 8, hs.retry_iterations = 16;
+    if (j % 3 == 2)
+      hs.penalty.max_step = 0.25;
     jobs.push_back({&s.a, &s.b, s.pairs.data() + first, count, hs, together.data() + first});
     hybrid_distances(s.a, s.b, s.pairs.data() + first, count, hs, 0, alone.data() + first,
                      sum_alone);

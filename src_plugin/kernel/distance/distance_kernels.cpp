@@ -162,10 +162,8 @@ public:
 private:
   // Whether two pairs' second runs are the same computation (the lanes of one block).
   static bool same_run(const HybridSettings &x, const HybridSettings &y) {
-    return x.newton_iterations == y.newton_iterations &&
-           x.retry_iterations == y.retry_iterations &&
-           x.penalty.penalty_weight == y.penalty.penalty_weight &&
-           x.penalty.regularisation == y.penalty.regularisation && x.tolerance == y.tolerance;
+    return x.newton_iterations == y.newton_iterations && x.retry_iterations == y.retry_iterations &&
+           x.penalty == y.penalty && x.tolerance == y.tolerance;
   }
   PendingBruteForce &brute_force_;
   HybridCounters &counters_;
@@ -228,9 +226,7 @@ private:
   // tolerance only feeds the Newton histogram, which is per lane.
   static bool same_run(const HybridJob &x, const HybridJob &y) {
     return x.settings.newton_iterations == y.settings.newton_iterations &&
-           x.settings.penalty.penalty_weight == y.settings.penalty.penalty_weight &&
-           x.settings.penalty.regularisation == y.settings.penalty.regularisation &&
-           x.settings.tolerance == y.settings.tolerance;
+           x.settings.penalty == y.settings.penalty && x.settings.tolerance == y.settings.tolerance;
   }
   PendingRetry &again_;
   PendingBruteForce &brute_force_;

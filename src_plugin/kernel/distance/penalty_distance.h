@@ -48,6 +48,12 @@ struct PenaltyParameters {
   // tests, the share the first 4 steps cannot certify falls from 22 % to 19 %, after 8 steps
   // from 5.9 % to 1.7 %. Steps within it, the last ones of a converging run, are unchanged.
   double max_step = 1.0;
+
+  // Every field: the lanes of one block run with one set (distance_kernels.cpp).
+  bool operator==(const PenaltyParameters &o) const {
+    return penalty_weight == o.penalty_weight && regularisation == o.regularisation &&
+           max_step == o.max_step;
+  }
 };
 
 // Per-lane output of penalty_block; lengths in the input unit.
