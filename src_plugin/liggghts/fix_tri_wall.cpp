@@ -557,7 +557,9 @@ double FixTriWall::memory_usage() {
   for (const tri::TriangleSoA &patch : patches_)
     bytes += 3.0 * patch.x.capacity() * sizeof(double);
   for (const Task &task : tasks_)
-    bytes += task.triangles.capacity() * sizeof(int);
+    bytes += (task.triangles.capacity() + task.ids.capacity()) * sizeof(int);
+  for (const std::vector<std::pair<int, int>> &near : near_)
+    bytes += sizeof(near) + near.capacity() * sizeof(std::pair<int, int>);
   for (const NodeScratch &s : node_scratch_)
     bytes += (s.nodes.capacity() + s.velocities.capacity()) * sizeof(Eigen::Vector3d);
   return bytes + static_cast<double>(engine_.bytes()) + static_cast<double>(candidates_.bytes());
