@@ -132,8 +132,9 @@ TEST_P(HybridAtScale, RetryKeepsBruteForcesAnswersWithFewerFallbacks) {
   for (int k = 0; k < n; ++k) {
     ASSERT_EQ(retried[k].distance < hs.cutoff, bf[k].distance < hs.cutoff) << s.names[k];
     contacts += bf[k].distance < hs.cutoff;
-    if (bf[k].distance < hs.cutoff)
+    if (bf[k].distance < hs.cutoff) {
       ASSERT_NEAR(retried[k].distance, bf[k].distance, hs.tolerance) << s.names[k];
+    }
     ASSERT_EQ(retried[k].intersecting, bf[k].intersecting) << s.names[k];
     ASSERT_EQ(parts[k].distance, retried[k].distance) << s.names[k];
     ASSERT_EQ(parts[k].point_a, retried[k].point_a) << s.names[k];
