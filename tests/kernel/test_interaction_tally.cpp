@@ -110,3 +110,38 @@ TEST(HistoryView, FlipsSignsIntoACopyAndBack) {
   tri::HistoryView none(nullptr, true, true);
   EXPECT_EQ(none.data(), nullptr);
 }
+
+// The history is written compactly, so a step copies and writes back only the slots occupied
+// before or after it: a large bed's histories do not stay in cache between steps.
+TEST(HistoryView, CopiesAndWritesBackOnlyTheOccupiedSlots) {
+  const int w = tri::kHistorySlotDoubles;
+  double stored[tri::kHistoryDoubles] = {};
+  EXPECT_EQ(tri::occupied_slots(stored), 0);
+  stored[w] = 1.0; // slot 1 occupied after an empty slot 0: not a written history's layout
+  EXPECT_EQ(tri::occupied_slots(stored), 0);
+  for (int v = 0; v < 2 * w; ++v)
+    stored[v] = v + 1.0; // slots 0 and 1
+  EXPECT_EQ(tri::occupied_slots(stored), 2);
+  stored[3 * w + 5] = 42.0; // in slot 3, empty, past the occupied: neither read nor written
+  {
+    tri::HistoryView view(stored, true, true);
+    for (int v = 0; v < 2 * w; ++v)
+      EXPECT_EQ(view.data()[v], tri::history_flips_sign(v) ? -(v + 1.0) : v + 1.0);
+    for (int v = 2 * w; v < tri::kHistoryDoubles; ++v)
+      EXPECT_EQ(view.data()[v], 0.0);
+    for (int v = 2 * w; v < 3 * w; ++v)
+      view.data()[v] = -5.0; // the kernel adds slot 2
+  }
+  for (int v = 2 * w; v < 3 * w; ++v)
+    EXPECT_EQ(stored[v], tri::history_flips_sign(v) ? 5.0 : -5.0);
+  EXPECT_EQ(stored[3 * w + 5], 42.0);
+  {
+    tri::HistoryView view(stored, true, true);
+    for (int v = w; v < tri::kHistoryDoubles; ++v)
+      view.data()[v] = 0.0; // the kernel keeps slot 0 only
+  }
+  EXPECT_EQ(tri::occupied_slots(stored), 1);
+  for (int v = w; v < 3 * w; ++v)
+    EXPECT_EQ(stored[v], 0.0); // -0.0 for a flipped value: empty all the same
+  EXPECT_EQ(stored[3 * w + 5], 42.0);
+}

@@ -67,6 +67,7 @@ PairForceResult pair_contact_force(const std::vector<ContactPoint> &contacts, co
   // midpoint of two particles (LIGGGHTS may swap i and j of a pair between neighbour-list
   // builds, see history_flips_sign), or the particle's centre against a wall (mass 0).
   const Vector3d origin = b.mass > 0.0 ? Vector3d(0.5 * (a.x + b.x)) : a.x;
+  const int old_slots = with_history ? occupied_slots(history) : 0;
   if (with_history)
     match_history(history, contacts.data(), n, origin, slot_of);
 
@@ -144,8 +145,11 @@ PairForceResult pair_contact_force(const std::vector<ContactPoint> &contacts, co
     r.intersecting = r.intersecting || c.intersecting;
   }
   r.contacts_after = n;
-  if (with_history)
-    std::copy(next, next + kHistoryDoubles, history);
+  // Slot k holds tracked contact k; beyond the slots occupied before and now, both are empty.
+  if (with_history) {
+    const int slots = std::max(old_slots, std::min(n, kHistorySlots));
+    std::copy(next, next + slots * kHistorySlotDoubles, history);
+  }
   return r;
 }
 

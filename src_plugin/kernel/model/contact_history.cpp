@@ -30,11 +30,10 @@ void match_history(const double *history, const ContactPoint *contacts, int n,
   Candidate candidates[kHistorySlots * kHistorySlots];
   int count = 0;
   const double cos_match = std::cos(kHistoryMatchAngle);
+  const int occupied = occupied_slots(history);
   for (int i = 0; i < tracked; ++i) {
     const Eigen::Vector3d lever = contacts[i].point - origin;
-    for (int s = 0; s < kHistorySlots; ++s) {
-      if (!slot_occupied(history, s))
-        continue;
+    for (int s = 0; s < occupied; ++s) {
       if (contacts[i].normal.dot(slot_normal(history, s)) < cos_match)
         continue;
       candidates[count++] = {(lever - slot_lever(history, s)).norm(), i, s};

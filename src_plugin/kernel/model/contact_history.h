@@ -28,6 +28,8 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
+
 namespace tri {
 
 constexpr int kHistorySlots = 4;
@@ -52,6 +54,15 @@ constexpr bool history_flips_sign(int k) { return k % kHistorySlotDoubles < 6; }
 inline bool slot_occupied(const double *history, int s) {
   const double *h = history + s * kHistorySlotDoubles;
   return h[0] != 0.0 || h[1] != 0.0 || h[2] != 0.0;
+}
+// The occupied slots, which come first (the history is written compactly): a step reads and
+// writes only those, not the whole block, since the block of every neighbour pair of a large
+// bed does not stay in cache from one step to the next.
+inline int occupied_slots(const double *history) {
+  int s = 0;
+  while (s < kHistorySlots && slot_occupied(history, s))
+    ++s;
+  return s;
 }
 inline Eigen::Vector3d slot_normal(const double *history, int s) {
   return Eigen::Vector3d(history + s * kHistorySlotDoubles);
@@ -79,21 +90,30 @@ public:
   HistoryView(double *stored, bool flip, bool update) : stored_(stored), flip_(flip), update_(update) {
     if (!stored_ || (!flip_ && update_))
       return;
-    for (int v = 0; v < kHistoryDoubles; ++v)
+    // Only the occupied slots are copied; the rest reads as empty, as it is stored.
+    slots_ = occupied_slots(stored_);
+    const int n = slots_ * kHistorySlotDoubles;
+    for (int v = 0; v < n; ++v)
       copy_[v] = flip_ && history_flips_sign(v) ? -stored_[v] : stored_[v];
+    for (int v = n; v < kHistoryDoubles; ++v)
+      copy_[v] = 0.0;
   }
   HistoryView(const HistoryView &) = delete;
   HistoryView &operator=(const HistoryView &) = delete;
   ~HistoryView() {
-    if (stored_ && flip_ && update_)
-      for (int v = 0; v < kHistoryDoubles; ++v)
-        stored_[v] = history_flips_sign(v) ? -copy_[v] : copy_[v];
+    if (!stored_ || !flip_ || !update_)
+      return;
+    // The slots occupied before or after: beyond both, stored and copy are empty alike.
+    const int n = std::max(slots_, occupied_slots(copy_)) * kHistorySlotDoubles;
+    for (int v = 0; v < n; ++v)
+      stored_[v] = history_flips_sign(v) ? -copy_[v] : copy_[v];
   }
   double *data() { return !stored_ ? nullptr : (!flip_ && update_) ? stored_ : copy_; }
 
 private:
   double *stored_;
   bool flip_, update_;
+  int slots_ = 0;
   double copy_[kHistoryDoubles];
 };
 
