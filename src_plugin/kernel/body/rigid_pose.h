@@ -38,4 +38,20 @@ inline double turn_bound(const RigidPose &then, const RigidPose &now) {
 // infinity when the poses do not describe the same body frame.
 double rigid_motion_bound(const RigidPose &then, const RigidPose &now);
 
+// b's pose seen from a: its centre in a's body frame and its turn relative to a.
+struct RelativePose {
+  Eigen::Vector3d t;
+  Eigen::Quaterniond r;
+};
+RelativePose relative_pose(const RigidPose &a, const RigidPose &b);
+
+// A bound on how far the two bodies' vertices moved relative to each other from relative pose
+// `then` to `now` (m): b's vertices seen from a's frame, |t - t0| + 2 sin(theta / 2) r_b, or
+// a's seen from b's, whichever is smaller. The distance between a point of a and a point of b
+// changes by at most either, and unlike the sum of both bodies' own motions it stays small
+// while the two move together (a flowing bed, a pile carried on a belt). A body of radius 0
+// (a wall, whose frame is the world's) gives no bound of its own; infinity if neither does.
+double relative_motion_bound(const RelativePose &then, const RelativePose &now, double radius_a,
+                             double radius_b);
+
 } // namespace tri

@@ -57,9 +57,15 @@ double CandidateCache::displacement(const Pose &then, const RigidPose *rigid, co
 
 double CandidateCache::moved(const Pose &a, const RigidPose *pose_a, const TriangleSoA &ta,
                              const Pose &b, const RigidPose *pose_b, const TriangleSoA &tb,
-                             double length) {
+                             double length, double relative_from) {
   double magnitude_a = 0.0, magnitude_b = 0.0;
-  const double d = displacement(a, pose_a, ta, magnitude_a) + displacement(b, pose_b, tb, magnitude_b);
+  double d = displacement(a, pose_a, ta, magnitude_a) + displacement(b, pose_b, tb, magnitude_b);
+  // Two particles: their relative motion may be far smaller (header). Finite d: both poses
+  // are rigid and of the same frames as then.
+  if (std::isfinite(d) && d >= relative_from && a.rigid && b.rigid)
+    d = std::min(d, relative_motion_bound(relative_pose(a.pose, b.pose),
+                                          relative_pose(*pose_a, *pose_b), pose_a->radius,
+                                          pose_b->radius));
   return d + kSeparationSlackRatio * (magnitude_a + magnitude_b + std::fabs(length));
 }
 
@@ -68,12 +74,13 @@ bool CandidateCache::covers(const RigidPose *pose_a, const TriangleSoA &a, const
   if (!valid_ || cutoff != cutoff_)
     return false;
   // false for NaN or an unbounded motion
-  return moved(a_, pose_a, a, b_, pose_b, b, cutoff + reach_) < reach_;
+  return moved(a_, pose_a, a, b_, pose_b, b, cutoff + reach_, 0.5 * reach_) < reach_;
 }
 
 double CandidateCache::skip_from(const RigidPose *pose_a, const TriangleSoA &a,
                                  const RigidPose *pose_b, const TriangleSoA &b, double cutoff) {
-  base_motion_ = moved(base_a_, pose_a, a, base_b_, pose_b, b, cutoff + reach_);
+  base_motion_ = moved(base_a_, pose_a, a, base_b_, pose_b, b, cutoff + reach_,
+                       kSkipRelativeFrom * cutoff);
   return std::isfinite(base_motion_) ? cutoff + base_motion_
                                      : std::numeric_limits<double>::infinity();
 }
@@ -157,7 +164,8 @@ void CandidateCache::keep(const RigidPose *pose_a, const TriangleSoA &a, const R
     lower_.assign(pairs_.size(), -std::numeric_limits<double>::infinity());
   } else {
     // The slack of `moved` for no motion: the rounding of the coordinates.
-    const double beyond = cutoff + reach + moved(a_, pose_a, a, b_, pose_b, b, cutoff + reach);
+    const double beyond = cutoff + reach + moved(a_, pose_a, a, b_, pose_b, b, cutoff + reach,
+                                                 std::numeric_limits<double>::infinity());
     for (int k = 0; k < count; ++k)
       if (!(results[k].lower_bound >= beyond)) {
         pairs_.push_back(pairs[k]);

@@ -59,17 +59,6 @@ void unpack_labels(double v, ContactPoint &c) {
   c.kind = static_cast<ContactKind>(packed / (base * base));
 }
 
-// b's pose seen from a: its centre in a's frame and its turn relative to a.
-struct RelativePose {
-  Vector3d t;
-  Quaterniond r;
-};
-
-RelativePose relative_pose(const RigidPose &a, const RigidPose &b) {
-  const Quaterniond qa(a.q), qb(b.q);
-  return {qa.conjugate() * (b.x - a.x), qa.conjugate() * qb};
-}
-
 RelativePose read_relative(const double *kept) {
   return {Vector3d(kept[1], kept[2], kept[3]), Quaterniond(kept[4], kept[5], kept[6], kept[7])};
 }
@@ -180,19 +169,8 @@ void keep_contacts(const RigidPose &a, const RigidPose &b, const std::vector<Con
 double kept_contacts_motion(const double *kept, const RigidPose &a, const RigidPose &b) {
   if (!contacts_kept(kept))
     return std::numeric_limits<double>::infinity();
-  const RelativePose then = read_relative(kept), now = relative_pose(a, b);
-  const Quaterniond turn = now.r * then.r.conjugate();
-  const double chord = 2.0 * turn.vec().norm(); // 2 sin(theta / 2)
-  // b's vertices seen from a, or a's seen from b (a's centre in b's frame: -r^-1 t): either
-  // bounds every relative displacement; a wall (radius 0, its frame the world's) only the second.
-  double d = std::numeric_limits<double>::infinity();
-  if (b.radius > 0.0)
-    d = (now.t - then.t).norm() + chord * b.radius;
-  if (a.radius > 0.0) {
-    const Vector3d a_now = -(now.r.conjugate() * now.t), a_then = -(then.r.conjugate() * then.t);
-    d = std::min(d, (a_now - a_then).norm() + chord * a.radius);
-  }
-  return std::isfinite(d) ? d : std::numeric_limits<double>::infinity();
+  // A static wall (radius 0, its frame the world's) is bounded by the particle's motion alone.
+  return relative_motion_bound(read_relative(kept), relative_pose(a, b), a.radius, b.radius);
 }
 
 void carry_kept_contacts(const double *kept, const RigidPose &a, const RigidPose &b,
