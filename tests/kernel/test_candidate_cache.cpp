@@ -460,10 +460,11 @@ TEST(CandidateCache, ReachFollowsTheRelativeMotion) {
   a.pose.radius = b.pose.radius = 0.002;
   const double cutoff = 2e-4, dt = 1e-5, coherence = 0.05;
   EXPECT_EQ(candidate_reach(a, b, coherence, cutoff, dt), coherence * cutoff);
-  b.state.v = Vector3d(0.5, 0, 0); // 5 um a step
-  EXPECT_DOUBLE_EQ(candidate_reach(a, b, coherence, cutoff, dt), kCandidateSteps * 5e-6);
+  b.state.v = Vector3d(0.1, 0, 0); // 1 um a step
+  EXPECT_DOUBLE_EQ(candidate_reach(a, b, coherence, cutoff, dt), kCandidateSteps * 1e-6);
   a.state.omega = Vector3d(0, 0, 100); // + 2 um a step at the radius
-  EXPECT_DOUBLE_EQ(candidate_reach(a, b, coherence, cutoff, dt), kCandidateSteps * 7e-6);
+  EXPECT_DOUBLE_EQ(candidate_reach(a, b, coherence, cutoff, dt), kCandidateSteps * 3e-6);
+  ASSERT_LT(kCandidateSteps * 3e-6, kCandidateReachCap * cutoff); // below the cap
   b.state.v = Vector3d(50, 0, 0);
   EXPECT_DOUBLE_EQ(candidate_reach(a, b, coherence, cutoff, dt), kCandidateReachCap * cutoff);
   b.state.v = Vector3d(std::numeric_limits<double>::quiet_NaN(), 0, 0);
