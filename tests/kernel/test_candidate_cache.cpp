@@ -62,8 +62,8 @@ struct MeetingPair {
   // slow spins: a few um a step over 2000 steps; both carried by `drift` (m) on the way.
   void at(double t, double eps, Body &a, Body &b, const Vector3d &drift = Vector3d::Zero()) {
     const double d = 0.0026 + 0.002 * std::abs(std::cos(M_PI * t));
-    path.at(Vector3d(0.01, -0.02, 0.03) + t * drift, d, 0.0008 * std::sin(5 * t), 1.5 * t,
-            -2.0 * t, 1.5, -2.0, eps, wa, wb, a, b);
+    path.at(Vector3d(0.01, -0.02, 0.03) + t * drift, d, 0.0008 * std::sin(5 * t), 1.5 * t, -2.0 * t,
+            1.5, -2.0, eps, wa, wb, a, b);
   }
 };
 
@@ -521,8 +521,8 @@ TEST(CandidateCache, RelativeMotionBoundHoldsForEveryVertexPair) {
   auto moved_pose = [&](const RigidPose &then, double scale) {
     RigidPose now = then;
     now.x = then.x + scale * Vector3d(u(rng), u(rng), u(rng));
-    now.q = Eigen::Quaterniond(Eigen::AngleAxisd(scale * 1e3 * u(rng),
-                                                 Vector3d(u(rng), 1, u(rng)).normalized())) *
+    now.q = Eigen::Quaterniond(
+                Eigen::AngleAxisd(scale * 1e3 * u(rng), Vector3d(u(rng), 1, u(rng)).normalized())) *
             then.q;
     return now;
   };

@@ -79,8 +79,8 @@ bool CandidateCache::covers(const RigidPose *pose_a, const TriangleSoA &a, const
 
 double CandidateCache::skip_from(const RigidPose *pose_a, const TriangleSoA &a,
                                  const RigidPose *pose_b, const TriangleSoA &b, double cutoff) {
-  base_motion_ = moved(base_a_, pose_a, a, base_b_, pose_b, b, cutoff + reach_,
-                       kSkipRelativeFrom * cutoff);
+  base_motion_ =
+      moved(base_a_, pose_a, a, base_b_, pose_b, b, cutoff + reach_, kSkipRelativeFrom * cutoff);
   return std::isfinite(base_motion_) ? cutoff + base_motion_
                                      : std::numeric_limits<double>::infinity();
 }
@@ -164,8 +164,9 @@ void CandidateCache::keep(const RigidPose *pose_a, const TriangleSoA &a, const R
     lower_.assign(pairs_.size(), -std::numeric_limits<double>::infinity());
   } else {
     // The slack of `moved` for no motion: the rounding of the coordinates.
-    const double beyond = cutoff + reach + moved(a_, pose_a, a, b_, pose_b, b, cutoff + reach,
-                                                 std::numeric_limits<double>::infinity());
+    const double beyond = cutoff + reach +
+                          moved(a_, pose_a, a, b_, pose_b, b, cutoff + reach,
+                                std::numeric_limits<double>::infinity());
     for (int k = 0; k < count; ++k)
       if (!(results[k].lower_bound >= beyond)) {
         pairs_.push_back(pairs[k]);

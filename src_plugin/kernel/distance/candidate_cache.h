@@ -24,12 +24,13 @@
 // rigid_pose.h): b's vertices seen from a's frame move by at most |t - t0| + 2 sin(theta / 2)
 // r_b, (t, theta) b's centre in a's frame and its turn relative to a. In a flowing bed, where
 // neighbours move together, that keeps a list for many steps where the sum of the two bodies'
-// own motions used it up in a few (the formed hopper: 118 searches a step instead of 264).
-// D of a wall patch (no body frame; the host gathers its triangles afresh each step): the
-// largest displacement of its vertices, listed in the same order, which also catches a patch
-// whose triangles changed (then the count differs, or a vertex jumps). Rounding: the world vertices and the bound carry errors of a few ulps of
-// the coordinates; the slack, kSeparationSlackRatio (separating_axis.h) times the magnitudes,
-// is orders of magnitude above them.
+// own motions used it up in a few (the formed hopper: 118 searches a step instead of 264, 52
+// with kCandidateSteps' longer reach). D of a wall patch (no body frame; the host gathers its
+// triangles afresh each step): the largest displacement of its vertices, listed in the same
+// order, which also catches a patch whose triangles changed (then the count differs, or a
+// vertex jumps). Rounding: the world vertices and the bound carry errors of a few ulps of the
+// coordinates; the slack, kSeparationSlackRatio (separating_axis.h) times the magnitudes, is
+// orders of magnitude above them.
 //
 // The same bound thins the list from step to step. Each kept pair carries a lower bound l on
 // its distance at reference poses of the bodies: its certified lower bound from the distance
@@ -203,9 +204,9 @@ private:
   // of that and their relative motion (header). Either bounds the distances; the relative one
   // costs two relative poses, so a caller that a motion below relative_from already serves
   // (a settled pile's nanometres) does not pay for it.
-  static double moved(const Pose &a, const RigidPose *pose_a, const TriangleSoA &ta,
-                      const Pose &b, const RigidPose *pose_b, const TriangleSoA &tb,
-                      double length, double relative_from = 0.0);
+  static double moved(const Pose &a, const RigidPose *pose_a, const TriangleSoA &ta, const Pose &b,
+                      const RigidPose *pose_b, const TriangleSoA &tb, double length,
+                      double relative_from = 0.0);
   // skip_from asks for the relative motion from this fraction of the cutoff on: a flowing
   // bed's particles move farther in a step (a few hundredths), a settled pile's far less.
   static constexpr double kSkipRelativeFrom = 1e-3;
